@@ -1,0 +1,39 @@
+// `pneumachaos scenario`: the built-in defaults as a commented TOML file, or the key table.
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+
+namespace pneumachaos::cli {
+
+Action add_scenario(CLI::App& app) {
+  struct Args {
+    std::string scenario;
+    std::vector<std::string> sets;
+    bool keys = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "scenario", "Print a complete, commented scenario (defaults, or a file with overrides)");
+  cmd->add_option("scenario", args->scenario, "scenario TOML file to start from")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--set", args->sets, "override a scenario key");
+  cmd->add_flag("--keys", args->keys, "list every key with its unit and range (Markdown table)");
+  return [args]() {
+    if (args->keys) {
+      fmt::print("| key | unit | default | meaning | allowed |\n|---|---|---|---|---|\n");
+      const Scenario d = default_scenario();
+      for (const auto& k : scenario_key_infos()) {
+        fmt::print("| `{}` | {} | {} | {} | {} |\n", k.key, k.unit, setting_text(d, k.key),
+                   k.description, k.choices.empty() ? k.range : k.choices);
+      }
+      return kExitOk;
+    }
+    fmt::print("{}", scenario_to_toml(build_scenario(args->scenario, args->sets)));
+    return kExitOk;
+  };
+}
+
+}  // namespace pneumachaos::cli

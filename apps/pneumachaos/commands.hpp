@@ -1,0 +1,21 @@
+#pragma once
+// Each subcommand registers its options on the CLI11 app and returns the action to run after
+// parsing. Commands only translate arguments into library calls; no physics here.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace pneumachaos::cli {
+
+/// The action returns the process exit code.
+using Action = std::function<int()>;
+
+Action add_simulate(CLI::App& app);
+Action add_scenario(CLI::App& app);
+
+/// Exit codes shared by all commands.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitRunFailed = 3;
+
+}  // namespace pneumachaos::cli

@@ -1,0 +1,37 @@
+// pneumachaos: command-line entry point.
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+
+#include "commands.hpp"
+#include "pneumachaos/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"pneumachaos: stick-slip and chaotic oscillation of pneumatic cylinders"};
+  app.set_version_flag("--version", std::string("pneumachaos ") + PNEUMACHAOS_VERSION);
+  app.require_subcommand(1);
+  std::map<CLI::App*, pneumachaos::cli::Action> actions;
+  const auto add = [&](pneumachaos::cli::Action (*f)(CLI::App&)) {
+    auto action = f(app);
+    actions[app.get_subcommands({}).back()] = std::move(action);
+  };
+  add(pneumachaos::cli::add_simulate);
+  add(pneumachaos::cli::add_scenario);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (auto* sub : app.get_subcommands()) return actions.at(sub)();
+  } catch (const pneumachaos::Error& e) {
+    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
+    return pneumachaos::cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "pneumachaos: internal error: {}\n", e.what());
+    return 70;  // EX_SOFTWARE
+  }
+  return pneumachaos::cli::kExitOk;
+}

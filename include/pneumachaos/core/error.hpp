@@ -1,0 +1,21 @@
+#pragma once
+// The one error family for bad user input (ARCHITECTURE.md, habit 4).
+
+#include <stdexcept>
+#include <string>
+
+namespace pneumachaos {
+
+/// Raised for bad user input: a scenario key, a file line, a command-line value.
+/// `where()` names the place (file:line:column, a scenario key, a flag) and `what()` holds
+/// the full message "where: what was wrong, what was expected".
+class Error : public std::runtime_error {
+ public:
+  Error(std::string where, const std::string& message);
+  [[nodiscard]] const std::string& where() const noexcept { return where_; }
+
+ private:
+  std::string where_;
+};
+
+}  // namespace pneumachaos

@@ -1,0 +1,46 @@
+#pragma once
+// Uniformly sampled, multi-channel time series with named channels and units.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pneumachaos {
+
+/// One named channel of a TimeSeries, e.g. name "v", unit "m/s".
+struct Channel {
+  std::string name;
+  std::string unit;
+  std::vector<double> values;
+};
+
+/// Samples taken at t_k = start_s + k / rate_Hz, k = 0 .. size()-1, on every channel.
+class TimeSeries {
+ public:
+  /// rate_Hz must be positive and finite.
+  explicit TimeSeries(double rate_Hz, double start_s = 0.0);
+
+  /// Adds an empty channel; throws Error if the name already exists.
+  std::size_t add_channel(std::string name, std::string unit);
+  /// Appends one sample row: one value per channel, in channel order.
+  void append(std::span<const double> row);
+
+  [[nodiscard]] double rate_Hz() const noexcept { return rate_Hz_; }
+  [[nodiscard]] double start_s() const noexcept { return start_s_; }
+  [[nodiscard]] double time_s(std::size_t k) const noexcept {
+    return start_s_ + static_cast<double>(k) / rate_Hz_;
+  }
+  [[nodiscard]] std::size_t size() const noexcept;
+  [[nodiscard]] const std::vector<Channel>& channels() const noexcept { return channels_; }
+  /// The channel with this name; throws Error naming the known channels if absent.
+  [[nodiscard]] const Channel& channel(const std::string& name) const;
+  [[nodiscard]] bool has_channel(const std::string& name) const noexcept;
+
+ private:
+  double rate_Hz_;
+  double start_s_;
+  std::vector<Channel> channels_;
+};
+
+}  // namespace pneumachaos

@@ -1,0 +1,83 @@
+#pragma once
+// Friction models behind one interface (MODEL.md "Friction").
+
+#include <memory>
+#include <span>
+#include <string>
+
+namespace pneumachaos {
+
+enum class FrictionKind { kClassic, kStribeck, kLuGre };
+
+/// Parameters shared by all friction models; each model reads the ones it needs.
+/// Forces in N, velocities in m/s, pressures in Pa.
+struct FrictionParams {
+  FrictionKind kind = FrictionKind::kStribeck;
+  double coulomb_N = 20.0;               ///< Fc, kinetic friction level
+  double static_N = 40.0;                ///< Fs, breakaway (stiction) level
+  double viscous_Ns_per_m = 30.0;        ///< B (classic, stribeck) = sigma2 (lugre)
+  double stribeck_velocity_m_per_s = 0.01;  ///< vs
+  double stribeck_exponent = 2.0;        ///< delta in exp(-(|v|/vs)^delta)
+  double sigma0_N_per_m = 1.0e5;         ///< LuGre bristle stiffness
+  double sigma1_Ns_per_m = 300.0;        ///< LuGre bristle damping
+  /// Pressure dependence (MODEL.md item 4): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
+  double coulomb_gain_N_per_Pa = 0.0;
+  double static_gain_N_per_Pa = 0.0;
+};
+
+/// What a friction model sees of the plant.
+struct FrictionInput {
+  double v_m_per_s = 0.0;          ///< sliding velocity of the contact
+  double gauge_sum_Pa = 0.0;       ///< P1 + P2 - 2 Pa (0 for a contact not on the seal)
+  double position_m = 0.0;         ///< position along the contact (for textures)
+};
+
+class FrictionModel {
+ public:
+  explicit FrictionModel(const FrictionParams& p) : p_(p) {}
+  virtual ~FrictionModel() = default;
+
+  /// Internal states carried in the ODE state (LuGre: bristle deflection z [m]).
+  [[nodiscard]] virtual std::size_t state_count() const { return 0; }
+  /// True stiction: the contact may be stuck with v held at exactly 0 (classic, stribeck).
+  [[nodiscard]] virtual bool has_stiction() const = 0;
+
+  /// Friction force [N] opposing motion. Stiction models: while sliding in `direction`
+  /// (+1/-1), the velocity read as direction*max(direction*v, 0). Smooth models ignore
+  /// direction and use the internal state z, writing dz/dt to dz.
+  virtual double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                         std::span<double> dz) const = 0;
+
+  /// Largest holding force at rest: Fs for stiction models; for smooth models the force at
+  /// v = 0 with the present internal state.
+  [[nodiscard]] virtual double holding_force_N(const FrictionInput& in,
+                                               std::span<const double> z) const = 0;
+
+  /// Steady-state friction at constant velocity v != 0 (the friction-velocity curve).
+  [[nodiscard]] virtual double steady_force_N(const FrictionInput& in) const = 0;
+
+  /// Slope dF/dv of the steady curve at v (the paper's B, negative on a Stribeck drop).
+  [[nodiscard]] double steady_slope_Ns_per_m(const FrictionInput& in) const;
+
+  /// Steady internal state at constant velocity (zero for models without state).
+  virtual void steady_state(const FrictionInput& in, std::span<double> z) const;
+
+  [[nodiscard]] const FrictionParams& params() const { return p_; }
+
+ protected:
+  [[nodiscard]] double coulomb_N(const FrictionInput& in) const {
+    return p_.coulomb_N + p_.coulomb_gain_N_per_Pa * in.gauge_sum_Pa;
+  }
+  [[nodiscard]] double static_N(const FrictionInput& in) const {
+    return p_.static_N + p_.static_gain_N_per_Pa * in.gauge_sum_Pa;
+  }
+  /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
+  [[nodiscard]] double stribeck_level_N(const FrictionInput& in, double speed) const;
+
+  FrictionParams p_;
+};
+
+std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params);
+const char* friction_kind_name(FrictionKind kind);
+
+}  // namespace pneumachaos

@@ -1,0 +1,97 @@
+#pragma once
+// The pneumatic cylinder with its valves, seal friction and load, as a hybrid system
+// (MODEL.md equations (1)-(3)). Immutable: parameters and the derivative rule only; time,
+// state and mode belong to the integrator (ARCHITECTURE.md habit 2).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "pneumachaos/core/hybrid_system.hpp"
+#include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/scenario.hpp"
+#include "pneumachaos/model/state_layout.hpp"
+
+namespace pneumachaos {
+
+/// Per friction contact (index 0: piston seal, 1: load guide), stored in Mode::value.
+enum class ContactMode : std::int8_t {
+  kSmooth = 0,    ///< smooth friction model (LuGre), moving or not
+  kStuck = 1,     ///< true stiction: v = 0 held exactly, position frozen
+  kSlidePos = 2,  ///< sliding with v > 0
+  kSlideNeg = 3,  ///< sliding with v < 0
+  kAtStop = 4,    ///< piston held against the stop at x = 0
+};
+
+/// Quantities derived from a state, for output and analysis.
+struct PlantOutputs {
+  double seal_friction_N = 0.0;   ///< force the seal exerts against +x motion
+  double guide_friction_N = 0.0;  ///< same for the load guide (spring coupling)
+  double drive_force_N = 0.0;     ///< net non-friction force on the piston
+  double W1_kg_per_s = 0.0;       ///< mass flow into chamber 1
+  double W2_kg_per_s = 0.0;       ///< mass flow out of chamber 2
+  bool piston_stuck = false;      ///< stuck or held at the stop
+};
+
+class Plant final : public HybridSystem {
+ public:
+  /// Validates the scenario (throws Error naming the key) and builds the plant.
+  explicit Plant(const Scenario& scenario);
+
+  [[nodiscard]] std::size_t state_size() const override { return layout_.size; }
+  void derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
+                  double t) const override;
+  [[nodiscard]] std::size_t event_count(const Mode& mode) const override;
+  void event_functions(const Mode& mode, std::span<const double> x, double t,
+                       std::span<double> g) const override;
+  EventOutcome apply_event(std::size_t which, Mode& mode, std::span<double> x,
+                           double t) const override;
+  [[nodiscard]] Mode initial_mode(std::span<const double> x, double t) const override;
+
+  /// MODEL.md start of a run: chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
+  [[nodiscard]] std::vector<double> initial_state() const;
+  [[nodiscard]] PlantOutputs outputs(const Mode& mode, std::span<const double> x) const;
+
+  [[nodiscard]] const StateLayout& layout() const { return layout_; }
+  [[nodiscard]] const Scenario& scenario() const { return scenario_; }
+  [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
+  [[nodiscard]] double A1() const { return A1_; }
+  [[nodiscard]] double A2() const { return A2_; }
+  /// Mass whose motion carries the seal friction: total mass (rigid) or piston + rod (spring).
+  [[nodiscard]] double piston_mass_kg() const { return piston_mass_; }
+
+  /// Mass flows W1 (into chamber 1) and W2 (out of chamber 2) at these pressures.
+  [[nodiscard]] std::array<double, 2> mass_flows(double P1_Pa, double P2_Pa) const;
+
+ private:
+  enum class EventType : std::uint8_t { kVelocityZero, kBreakaway, kStopRelease, kStopHit, kStrokeEnd };
+  struct ActiveEvent {
+    EventType type;
+    std::uint8_t contact;
+  };
+  struct EventList {
+    std::array<ActiveEvent, 6> items{};
+    std::size_t count = 0;
+  };
+
+  [[nodiscard]] EventList active_events(const Mode& mode) const;
+  [[nodiscard]] double drive_force(std::size_t contact, std::span<const double> x) const;
+  [[nodiscard]] FrictionInput friction_input(std::size_t contact, std::span<const double> x) const;
+  [[nodiscard]] double holding_force(std::size_t contact, std::span<const double> x) const;
+  [[nodiscard]] double friction_force(std::size_t contact, ContactMode m, std::span<const double> x,
+                                      std::span<double> dz) const;
+  /// The mode of a contact at rest (v = 0) consistent with its forces.
+  [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
+                                      bool at_stop) const;
+
+  Scenario scenario_;
+  StateLayout layout_;
+  std::unique_ptr<FrictionModel> seal_;
+  std::unique_ptr<FrictionModel> guide_;
+  double A1_ = 0.0;
+  double A2_ = 0.0;
+  double piston_mass_ = 0.0;
+  std::size_t contacts_ = 1;
+};
+
+}  // namespace pneumachaos

@@ -1,0 +1,75 @@
+#pragma once
+// Every parameter of a run, in SI units with absolute pressures (MODEL.md). The scenario
+// keys users write (TOML, --set) speak engineering units; scenario_keys.hpp converts once.
+
+#include <optional>
+#include <string>
+
+#include "pneumachaos/core/hybrid_system.hpp"
+#include "pneumachaos/model/cylinder.hpp"
+#include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/valve_flow.hpp"
+
+namespace pneumachaos {
+
+enum class CircuitKind {
+  kMeterOut,  ///< S1 = supply (solenoid) valve, S2 = exhaust speed controller (the paper's rig)
+  kMeterIn,   ///< S1 = supply speed controller, S2 = free exhaust (large unless set)
+};
+
+enum class LoadCoupling {
+  kRigid,   ///< piston, rod and load move as one mass (the paper's model)
+  kSpring,  ///< the load rides its own guide, coupled to the rod by a spring and damper
+};
+
+struct CircuitParams {
+  CircuitKind kind = CircuitKind::kMeterOut;
+  std::optional<double> S1_m2;  ///< unset: 2.70 mm^2 (meter-out) / 0.35 mm^2 (meter-in)
+  std::optional<double> S2_m2;  ///< unset: 0.35 mm^2 (meter-out) / 20 mm^2 (meter-in)
+  [[nodiscard]] double S1() const;
+  [[nodiscard]] double S2() const;
+};
+
+struct LoadParams {
+  double mass_kg = 1.5;            ///< total moving mass m (rigid) / load mass (spring)
+  double external_force_N = 0.0;   ///< constant force opposing extension
+  LoadCoupling coupling = LoadCoupling::kRigid;
+  double piston_mass_kg = 0.5;     ///< piston + rod, spring coupling only
+  double coupling_stiffness_N_per_m = 8.0e3;
+  double coupling_damping_Ns_per_m = 7.0;
+  FrictionParams guide_friction{FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0,
+                                1.0e5, 50.0, 0.0, 0.0};
+};
+
+struct RunParams {
+  double duration_s = 10.0;
+  double sample_rate_Hz = 1000.0;
+  double relative_tolerance = 1e-7;
+  double absolute_tolerance = 1e-10;
+  double max_step_s = 2e-3;  ///< bounds the step so short event excursions are not stepped over
+  StepperKind stepper = StepperKind::kDopri5;
+};
+
+struct Scenario {
+  GasConstants gas;
+  double polytropic_exponent = 1.4;   ///< k of eqs. (2)-(3): 1.4 adiabatic, 1.0 isothermal
+  double temperature_K = 293.15;      ///< chambers and supply
+  double ambient_pressure_Pa = 101325.0;
+  double supply_gauge_Pa = 0.25e6;    ///< Ps above ambient (key supply.pressure_MPa)
+  CylinderGeometry cylinder;
+  CircuitParams circuit;
+  ValveLaw valve;
+  FrictionParams friction;
+  LoadParams load;
+  RunParams run;
+
+  [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }
+
+  /// Cross-key checks (rod < bore, Fs >= Fc, ...); throws Error naming the key(s).
+  void validate() const;
+};
+
+/// The built-in default scenario (every default is documented in docs/scenario.md).
+Scenario default_scenario();
+
+}  // namespace pneumachaos

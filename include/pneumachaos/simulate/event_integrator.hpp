@@ -1,0 +1,72 @@
+#pragma once
+// Integration of a HybridSystem with event location: Boost.Odeint steppers advance the smooth
+// segments, events are located on the stepper's dense output with Boost.Math's TOMS 748
+// bracketing root finder, and samples are taken at a fixed rate from the dense output.
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pneumachaos/core/hybrid_system.hpp"
+
+namespace pneumachaos {
+
+struct IntegratorOptions {
+  double t_start_s = 0.0;
+  double t_end_s = 1.0;
+  double relative_tolerance = 1e-7;
+  double absolute_tolerance = 1e-10;
+  double max_step_s = 2e-3;
+  double initial_step_s = 1e-5;
+  StepperKind stepper = StepperKind::kDopri5;
+  double sample_rate_Hz = 1000.0;  ///< 0: no samples
+  /// Events allowed at one instant before the run is called chattering (Zeno).
+  std::size_t max_events_at_one_instant = 64;
+  std::size_t max_steps = 20'000'000;
+
+  /// Throws Error naming the offending option.
+  void validate() const;
+};
+
+enum class Termination {
+  kDurationReached,  ///< integrated to t_end
+  kTerminalEvent,    ///< an event ended the run (e.g. end of stroke)
+  kSolverFailure,    ///< step size underflow, non-finite state, step limit
+  kChattering,       ///< too many events at one instant (Zeno behaviour)
+};
+const char* termination_name(Termination t);
+
+struct EventCounts {
+  std::size_t stick = 0, slip = 0, reversal = 0, stop_hit = 0, stop_release = 0;
+};
+
+/// What happened in a run (ARCHITECTURE.md habit 3: options in, summary out).
+struct IntegrationSummary {
+  Termination termination = Termination::kDurationReached;
+  std::string message;
+  double t_final_s = 0.0;
+  std::size_t steps_accepted = 0;
+  std::size_t steps_rejected = 0;
+  std::size_t rhs_evaluations = 0;
+  EventCounts events;
+  double wall_time_s = 0.0;
+  [[nodiscard]] bool ok() const {
+    return termination == Termination::kDurationReached ||
+           termination == Termination::kTerminalEvent;
+  }
+};
+
+/// Receives each sample: time, state, mode.
+using SampleObserver =
+    std::function<void(double t, std::span<const double> x, const Mode& mode)>;
+
+/// Integrates `system` from (x, mode) at options.t_start_s to options.t_end_s or a terminal
+/// event. On return x and mode hold the final state. Never throws for numerical trouble: a
+/// failure is reported in the summary (bad options still throw Error).
+IntegrationSummary integrate_hybrid(const HybridSystem& system, std::vector<double>& x, Mode& mode,
+                                    const IntegratorOptions& options,
+                                    const SampleObserver& observer = {});
+
+}  // namespace pneumachaos

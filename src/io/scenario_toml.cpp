@@ -1,0 +1,81 @@
+#include "pneumachaos/io/scenario_toml.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+
+namespace pneumachaos {
+namespace {
+
+std::string location(const std::string& origin, const toml::source_region& src) {
+  return fmt::format("{}:{}:{}", origin, src.begin.line, src.begin.column);
+}
+
+void apply_table(Scenario& scenario, const toml::table& table, const std::string& prefix,
+                 const std::string& origin) {
+  for (const auto& [name, node] : table) {
+    const std::string key = prefix + std::string(name.str());
+    const std::string where = location(origin, node.source());
+    if (const auto* sub = node.as_table()) {
+      apply_table(scenario, *sub, key + ".", origin);
+    } else if (const auto* i = node.as_integer()) {
+      apply_setting(scenario, key, static_cast<double>(i->get()), where);
+    } else if (const auto* f = node.as_floating_point()) {
+      apply_setting(scenario, key, f->get(), where);
+    } else if (const auto* s = node.as_string()) {
+      apply_setting(scenario, key, s->get(), where);
+    } else {
+      throw Error(where + ": " + key,
+                  "expected a number or a word; arrays, booleans and dates are not scenario values");
+    }
+  }
+}
+
+}  // namespace
+
+void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin) {
+  toml::table doc;
+  try {
+    doc = toml::parse(toml_text, origin);
+  } catch (const toml::parse_error& e) {
+    throw Error(location(origin, e.source()), std::string("TOML syntax error: ") +
+                                                  std::string(e.description()));
+  }
+  apply_table(scenario, doc, "", origin);
+}
+
+Scenario load_scenario_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path, "cannot open the scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  Scenario s = default_scenario();
+  apply_toml(s, text.str(), path);
+  return s;
+}
+
+void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments) {
+  for (const auto& a : assignments) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw Error("--set " + a, "expected key=value, e.g. --set friction.Fs_N=30");
+    }
+    const std::string key = a.substr(0, eq);
+    const std::string where = "--set";
+    apply_setting(scenario, key, parse_setting_text(key, a.substr(eq + 1), where), where);
+  }
+}
+
+Scenario build_scenario(const std::string& path, const std::vector<std::string>& assignments) {
+  Scenario s = path.empty() ? default_scenario() : load_scenario_file(path);
+  apply_overrides(s, assignments);
+  s.validate();
+  return s;
+}
+
+}  // namespace pneumachaos

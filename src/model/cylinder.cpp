@@ -1,0 +1,13 @@
+#include "pneumachaos/model/cylinder.hpp"
+
+#include <numbers>
+
+namespace pneumachaos {
+
+double CylinderGeometry::area_head_m2() const { return std::numbers::pi / 4.0 * bore_m * bore_m; }
+
+double CylinderGeometry::area_rod_m2() const {
+  return std::numbers::pi / 4.0 * (bore_m * bore_m - rod_m * rod_m);
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,49 @@
+#include "pneumachaos/model/friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "friction_models.hpp"
+
+namespace pneumachaos {
+
+double FrictionModel::stribeck_level_N(const FrictionInput& in, double speed) const {
+  const double fc = coulomb_N(in);
+  const double fs = static_N(in);
+  const double vs = p_.stribeck_velocity_m_per_s;
+  return fc + (fs - fc) * std::exp(-std::pow(std::abs(speed) / vs, p_.stribeck_exponent));
+}
+
+double FrictionModel::steady_slope_Ns_per_m(const FrictionInput& in) const {
+  // Central difference with a step small against vs but far above rounding.
+  const double h = std::max(1e-7, 1e-4 * std::abs(in.v_m_per_s));
+  FrictionInput lo = in;
+  FrictionInput hi = in;
+  lo.v_m_per_s -= h;
+  hi.v_m_per_s += h;
+  return (steady_force_N(hi) - steady_force_N(lo)) / (2.0 * h);
+}
+
+void FrictionModel::steady_state(const FrictionInput& /*in*/, std::span<double> z) const {
+  std::fill(z.begin(), z.end(), 0.0);
+}
+
+std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params) {
+  switch (params.kind) {
+    case FrictionKind::kClassic: return std::make_unique<ClassicFriction>(params);
+    case FrictionKind::kStribeck: return std::make_unique<StribeckFriction>(params);
+    case FrictionKind::kLuGre: return std::make_unique<LuGreFriction>(params);
+  }
+  return nullptr;
+}
+
+const char* friction_kind_name(FrictionKind kind) {
+  switch (kind) {
+    case FrictionKind::kClassic: return "classic";
+    case FrictionKind::kStribeck: return "stribeck";
+    case FrictionKind::kLuGre: return "lugre";
+  }
+  return "?";
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,47 @@
+#pragma once
+// The concrete friction models; private to the model module (use make_friction_model).
+
+#include "pneumachaos/model/friction.hpp"
+
+namespace pneumachaos {
+
+/// Paper eq. (4): Fs at rest, Fc sgn v + B v while sliding; true stiction.
+class ClassicFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] bool has_stiction() const override { return true; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+};
+
+/// [Fc + (Fs - Fc) exp(-(|v|/vs)^delta)] sgn v + B v, with the same stiction handling.
+class StribeckFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] bool has_stiction() const override { return true; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+};
+
+/// Canudas de Wit, Olsson, Astrom & Lischinsky (1995), IEEE TAC 40(3): bristle model
+/// dz/dt = v - sigma0 |v| z / g(v), F = sigma0 z + sigma1 dz/dt + sigma2 v.
+class LuGreFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] std::size_t state_count() const override { return 1; }
+  [[nodiscard]] bool has_stiction() const override { return false; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  void steady_state(const FrictionInput& in, std::span<double> z) const override;
+};
+
+}  // namespace pneumachaos

@@ -1,0 +1,283 @@
+#include "pneumachaos/model/plant.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pneumachaos {
+namespace {
+
+constexpr std::size_t kSeal = 0;
+constexpr std::size_t kGuide = 1;
+
+ContactMode mode_of(const Mode& m, std::size_t contact) {
+  return static_cast<ContactMode>(m.value[contact]);
+}
+void set_mode(Mode& m, std::size_t contact, ContactMode c) {
+  m.value[contact] = static_cast<std::int8_t>(c);
+}
+bool moving(ContactMode m) { return m != ContactMode::kStuck && m != ContactMode::kAtStop; }
+int direction_of(ContactMode m) {
+  return m == ContactMode::kSlidePos ? 1 : (m == ContactMode::kSlideNeg ? -1 : 0);
+}
+
+}  // namespace
+
+Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
+  scenario_.validate();
+  A1_ = scenario_.cylinder.area_head_m2();
+  A2_ = scenario_.cylinder.area_rod_m2();
+  seal_ = make_friction_model(scenario_.friction);
+  if (seal_->state_count() > 0) {
+    layout_.seal_z_count = seal_->state_count();
+    layout_.seal_z = layout_.append("z", "m", layout_.seal_z_count);
+  }
+  const bool spring = scenario_.load.coupling == LoadCoupling::kSpring;
+  piston_mass_ = spring ? scenario_.load.piston_mass_kg : scenario_.load.mass_kg;
+  if (spring) {
+    contacts_ = 2;
+    guide_ = make_friction_model(scenario_.load.guide_friction);
+    layout_.load_x = layout_.append("x_load", "m");
+    layout_.load_v = layout_.append("v_load", "m/s");
+    if (guide_->state_count() > 0) {
+      layout_.guide_z_count = guide_->state_count();
+      layout_.guide_z = layout_.append("z_guide", "m", layout_.guide_z_count);
+    }
+  }
+}
+
+std::vector<double> Plant::initial_state() const {
+  std::vector<double> x(layout_.size, 0.0);
+  x[layout_.P1] = scenario_.ambient_pressure_Pa;
+  x[layout_.P2] = scenario_.supply_pressure_Pa();
+  return x;
+}
+
+std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
+  const double T = scenario_.temperature_K;
+  const double W1 = valve_mass_flow(scenario_.valve, scenario_.gas, scenario_.circuit.S1(),
+                                    scenario_.supply_pressure_Pa(), T, P1_Pa, T);
+  const double W2 = valve_mass_flow(scenario_.valve, scenario_.gas, scenario_.circuit.S2(), P2_Pa,
+                                    T, scenario_.ambient_pressure_Pa, T);
+  return {W1, W2};
+}
+
+double Plant::drive_force(std::size_t contact, std::span<const double> x) const {
+  const double Pa = scenario_.ambient_pressure_Pa;
+  const auto& L = layout_;
+  double coupling = 0.0;
+  if (contacts_ == 2) {
+    coupling = scenario_.load.coupling_stiffness_N_per_m * (x[L.x] - x[L.load_x]) +
+               scenario_.load.coupling_damping_Ns_per_m * (x[L.v] - x[L.load_v]);
+  }
+  if (contact == kGuide) return coupling - scenario_.load.external_force_N;
+  const double pneumatic = A1_ * (x[L.P1] - Pa) - A2_ * (x[L.P2] - Pa);
+  return pneumatic - (contacts_ == 2 ? coupling : scenario_.load.external_force_N);
+}
+
+FrictionInput Plant::friction_input(std::size_t contact, std::span<const double> x) const {
+  const auto& L = layout_;
+  if (contact == kGuide) return {x[L.load_v], 0.0, x[L.load_x]};
+  return {x[L.v], x[L.P1] + x[L.P2] - 2.0 * scenario_.ambient_pressure_Pa, x[L.x]};
+}
+
+double Plant::holding_force(std::size_t contact, std::span<const double> x) const {
+  const auto& L = layout_;
+  const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
+  const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
+  const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
+  return f.holding_force_N(friction_input(contact, x),
+                           nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
+}
+
+double Plant::friction_force(std::size_t contact, ContactMode m, std::span<const double> x,
+                             std::span<double> dz) const {
+  const auto& L = layout_;
+  const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
+  const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
+  const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
+  const auto z = nz == 0 ? std::span<const double>{} : x.subspan(z0, nz);
+  if (!moving(m)) {
+    std::fill(dz.begin(), dz.end(), 0.0);  // bristles neither deflect nor relax at rest
+    return 0.0;
+  }
+  return f.force_N(friction_input(contact, x), direction_of(m), z, dz);
+}
+
+void Plant::derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
+                       double /*t*/) const {
+  const auto& L = layout_;
+  const double k = scenario_.polytropic_exponent;
+  const double RT = scenario_.gas.R_J_per_kgK * scenario_.temperature_K;
+  const double xp = x[L.x];
+  const double vp = x[L.v];
+  const double P1 = x[L.P1];
+  const double P2 = x[L.P2];
+  const double V1 = scenario_.cylinder.volume_head_m3(xp);
+  const double V2 = scenario_.cylinder.volume_rod_m3(xp);
+  const auto [W1, W2] = mass_flows(P1, P2);
+  dxdt[L.P1] = k * RT / V1 * W1 - k * P1 * A1_ / V1 * vp;   // eq. (2)
+  dxdt[L.P2] = -k * RT / V2 * W2 + k * P2 * A2_ / V2 * vp;  // eq. (3)
+
+  const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
+                        std::size_t nz, double mass) {
+    const ContactMode m = mode_of(mode, contact);
+    std::span<double> dz = nz == 0 ? std::span<double>{} : dxdt.subspan(iz, nz);
+    const double friction = friction_force(contact, m, x, dz);
+    if (moving(m)) {
+      dxdt[ix] = x[iv];
+      dxdt[iv] = (drive_force(contact, x) - friction) / mass;  // eq. (1)
+    } else {
+      dxdt[ix] = 0.0;
+      dxdt[iv] = 0.0;
+    }
+  };
+  body(kSeal, L.x, L.v, L.seal_z, L.seal_z_count, piston_mass_);
+  if (contacts_ == 2) {
+    body(kGuide, L.load_x, L.load_v, L.guide_z, L.guide_z_count, scenario_.load.mass_kg);
+  }
+}
+
+Plant::EventList Plant::active_events(const Mode& mode) const {
+  EventList list;
+  const auto add = [&](EventType t, std::size_t c) {
+    list.items[list.count++] = {t, static_cast<std::uint8_t>(c)};
+  };
+  for (std::size_t c = 0; c < contacts_; ++c) {
+    const ContactMode m = mode_of(mode, c);
+    if (m == ContactMode::kSlidePos || m == ContactMode::kSlideNeg) add(EventType::kVelocityZero, c);
+    if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
+    if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
+    if (c == kSeal && moving(m)) {
+      if (m != ContactMode::kSlidePos) add(EventType::kStopHit, c);
+      add(EventType::kStrokeEnd, c);
+    }
+  }
+  return list;
+}
+
+std::size_t Plant::event_count(const Mode& mode) const { return active_events(mode).count; }
+
+void Plant::event_functions(const Mode& mode, std::span<const double> x, double /*t*/,
+                            std::span<double> g) const {
+  const auto& L = layout_;
+  const EventList list = active_events(mode);
+  for (std::size_t i = 0; i < list.count; ++i) {
+    const std::size_t c = list.items[i].contact;
+    const std::size_t iv = c == kSeal ? L.v : L.load_v;
+    switch (list.items[i].type) {
+      case EventType::kVelocityZero:
+        g[i] = direction_of(mode_of(mode, c)) * x[iv];
+        break;
+      case EventType::kBreakaway:
+        g[i] = holding_force(c, x) - std::abs(drive_force(c, x));
+        break;
+      case EventType::kStopRelease:
+        g[i] = holding_force(c, x) - drive_force(c, x);
+        break;
+      case EventType::kStopHit:
+        g[i] = x[L.x];
+        break;
+      case EventType::kStrokeEnd:
+        g[i] = scenario_.cylinder.stroke_m - x[L.x];
+        break;
+    }
+  }
+}
+
+ContactMode Plant::rest_mode(std::size_t contact, std::span<const double> x, bool at_stop) const {
+  const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
+  const double drive = drive_force(contact, x);
+  const double hold = holding_force(contact, x);
+  if (at_stop) {
+    if (drive - hold <= 0.0) return ContactMode::kAtStop;
+    return f.has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmooth;
+  }
+  if (!f.has_stiction()) return ContactMode::kSmooth;
+  if (std::abs(drive) <= hold) return ContactMode::kStuck;
+  return drive > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg;
+}
+
+EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double> x,
+                                double /*t*/) const {
+  const auto& L = layout_;
+  const ActiveEvent ev = active_events(mode).items.at(which);
+  const std::size_t c = ev.contact;
+  const std::size_t ix = c == kSeal ? L.x : L.load_x;
+  const std::size_t iv = c == kSeal ? L.v : L.load_v;
+  EventOutcome out;
+  switch (ev.type) {
+    case EventType::kVelocityZero: {
+      x[iv] = 0.0;
+      const ContactMode next = rest_mode(c, x, false);
+      out.kind = next == ContactMode::kStuck ? EventKind::kStick : EventKind::kReversal;
+      set_mode(mode, c, next);
+      break;
+    }
+    case EventType::kBreakaway:
+      set_mode(mode, c, drive_force(c, x) > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg);
+      out.kind = EventKind::kSlip;
+      break;
+    case EventType::kStopRelease:
+      set_mode(mode, c, seal_->has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmooth);
+      out.kind = EventKind::kStopRelease;
+      break;
+    case EventType::kStopHit:
+      // A hard stop: no penetration, the velocity is set to zero (MODEL.md).
+      x[ix] = 0.0;
+      x[iv] = 0.0;
+      set_mode(mode, c, rest_mode(c, x, true));
+      out.kind = EventKind::kStopHit;
+      break;
+    case EventType::kStrokeEnd:
+      x[ix] = scenario_.cylinder.stroke_m;
+      out.kind = EventKind::kTerminal;
+      out.terminate = true;
+      out.message = "end of stroke reached";
+      break;
+  }
+  return out;
+}
+
+Mode Plant::initial_mode(std::span<const double> x, double /*t*/) const {
+  Mode mode;
+  const auto& L = layout_;
+  const auto start = [&](std::size_t c, double pos, double vel, bool can_stop) {
+    if (vel != 0.0) {
+      const FrictionModel& f = c == kSeal ? *seal_ : *guide_;
+      set_mode(mode, c, !f.has_stiction() ? ContactMode::kSmooth
+                        : vel > 0         ? ContactMode::kSlidePos
+                                          : ContactMode::kSlideNeg);
+      return;
+    }
+    set_mode(mode, c, rest_mode(c, x, can_stop && pos <= 0.0));
+  };
+  start(kSeal, x[L.x], x[L.v], true);
+  if (contacts_ == 2) start(kGuide, x[L.load_x], x[L.load_v], false);
+  return mode;
+}
+
+PlantOutputs Plant::outputs(const Mode& mode, std::span<const double> x) const {
+  PlantOutputs out;
+  std::array<double, 8> scratch{};
+  const auto reported = [&](std::size_t c) {
+    const ContactMode m = mode_of(mode, c);
+    const double drive = drive_force(c, x);
+    if (m == ContactMode::kStuck) return drive;  // static friction balances the drive
+    if (m == ContactMode::kAtStop) {
+      // The stop takes whatever pushes into it; friction holds at most its holding force.
+      return seal_->has_stiction() ? std::clamp(drive, 0.0, holding_force(c, x))
+                                   : holding_force(c, x);
+    }
+    return friction_force(c, m, x, std::span<double>(scratch.data(), 4));
+  };
+  out.seal_friction_N = reported(kSeal);
+  if (contacts_ == 2) out.guide_friction_N = reported(kGuide);
+  out.drive_force_N = drive_force(kSeal, x);
+  const auto [W1, W2] = mass_flows(x[layout_.P1], x[layout_.P2]);
+  out.W1_kg_per_s = W1;
+  out.W2_kg_per_s = W2;
+  out.piston_stuck = !moving(mode_of(mode, kSeal));
+  return out;
+}
+
+}  // namespace pneumachaos

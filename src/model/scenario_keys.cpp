@@ -1,0 +1,318 @@
+#include "pneumachaos/model/scenario_keys.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Range {
+  double lo = -kInf;
+  double hi = kInf;
+  bool lo_open = false;
+  bool hi_open = false;
+  [[nodiscard]] bool contains(double v) const {
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  [[nodiscard]] std::string text() const {
+    std::string out;
+    if (lo > -kInf) out += fmt::format("{} {}", lo_open ? ">" : ">=", lo);
+    if (hi < kInf) out += fmt::format("{}{} {}", out.empty() ? "" : " and ", hi_open ? "<" : "<=", hi);
+    return out.empty() ? "any finite number" : out;
+  }
+};
+
+const Range kPositive{0.0, kInf, true, false};
+const Range kNonNegative{0.0, kInf, false, false};
+
+struct KeySpec {
+  KeyInfo info;
+  bool is_word = false;
+  double scale = 1.0;  // user unit -> SI
+  Range range;
+  std::function<void(Scenario&, double)> set_number;
+  std::function<double(const Scenario&)> get_number;
+  std::vector<std::string> words;
+  std::function<void(Scenario&, std::size_t)> set_word;
+  std::function<std::size_t(const Scenario&)> get_word;
+};
+
+// `ref` is a generic lambda returning a reference to the SI field, usable on const and
+// non-const scenarios, so one line per key serves both the setter and the getter.
+template <typename Ref>
+KeySpec number(std::string key, std::string unit, std::string description, double scale,
+               Range range, Ref ref) {
+  KeySpec s;
+  s.info = {std::move(key), std::move(unit), std::move(description), "", range.text()};
+  s.scale = scale;
+  s.range = range;
+  s.set_number = [ref](Scenario& sc, double si) { ref(sc) = si; };
+  s.get_number = [ref](const Scenario& sc) -> double {
+    const auto& v = ref(sc);
+    // Optional keys (S1, S2) override this getter with their resolved default.
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::optional<double>>) {
+      return v.value_or(0.0);
+    } else {
+      return v;
+    }
+  };
+  return s;
+}
+
+template <typename Enum, typename Ref>
+KeySpec word(std::string key, std::string description, std::vector<std::string> words, Ref ref) {
+  KeySpec s;
+  std::string choices;
+  for (const auto& w : words) choices += (choices.empty() ? "" : " | ") + w;
+  s.info = {std::move(key), "", std::move(description), choices, ""};
+  s.is_word = true;
+  s.words = std::move(words);
+  s.set_word = [ref](Scenario& sc, std::size_t i) { ref(sc) = static_cast<Enum>(i); };
+  s.get_word = [ref](const Scenario& sc) { return static_cast<std::size_t>(ref(sc)); };
+  return s;
+}
+
+// The same friction keys serve the piston seal ("friction.") and the load guide
+// ("guide_friction."), so they are generated from one list.
+template <typename Ref>
+void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
+                       const std::string& what, Ref ref) {
+  keys.push_back(word<FrictionKind>(prefix + "model", "friction model of the " + what,
+                                    {"classic", "stribeck", "lugre"},
+                                    [ref](auto& s) -> auto& { return ref(s).kind; }));
+  keys.push_back(number(prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0, kNonNegative,
+                        [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
+  keys.push_back(number(prefix + "Fs_N", "N", "static (breakaway) friction Fs, >= Fc", 1.0,
+                        kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_N; }));
+  keys.push_back(number(prefix + "B_Ns_per_m", "N*s/m",
+                        "viscous coefficient B (sigma2 for lugre)", 1.0, kNonNegative,
+                        [ref](auto& s) -> auto& { return ref(s).viscous_Ns_per_m; }));
+  keys.push_back(number(prefix + "vs_mm_per_s", "mm/s", "Stribeck velocity vs", 1e-3, kPositive,
+                        [ref](auto& s) -> auto& { return ref(s).stribeck_velocity_m_per_s; }));
+  keys.push_back(number(prefix + "stribeck_exponent", "-",
+                        "exponent delta of exp(-(|v|/vs)^delta)", 1.0, Range{0.1, 10.0},
+                        [ref](auto& s) -> auto& { return ref(s).stribeck_exponent; }));
+  keys.push_back(number(prefix + "sigma0_N_per_m", "N/m", "LuGre bristle stiffness sigma0", 1.0,
+                        kPositive, [ref](auto& s) -> auto& { return ref(s).sigma0_N_per_m; }));
+  keys.push_back(number(prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
+                        kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  keys.push_back(number(prefix + "Fc_gain_N_per_MPa", "N/MPa",
+                        "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
+                        kNonNegative,
+                        [ref](auto& s) -> auto& { return ref(s).coulomb_gain_N_per_Pa; }));
+  keys.push_back(number(prefix + "Fs_gain_N_per_MPa", "N/MPa",
+                        "pressure dependence: Fs grows by this per MPa of P1+P2-2Pa", 1e-6,
+                        kNonNegative,
+                        [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
+}
+
+std::vector<KeySpec> build_keys() {
+  std::vector<KeySpec> k;
+  k.push_back(word<CircuitKind>("circuit.kind",
+                                "meter-out: S2 is the exhaust speed controller (the paper's rig); "
+                                "meter-in: S1 is the supply speed controller",
+                                {"meter-out", "meter-in"},
+                                [](auto& s) -> auto& { return s.circuit.kind; }));
+  {
+    KeySpec s1 = number("circuit.S1_mm2", "mm^2",
+                        "effective sectional area of the supply-side valve (default 2.70 "
+                        "meter-out, 0.35 meter-in)",
+                        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S1_m2; });
+    s1.get_number = [](const Scenario& s) { return s.circuit.S1(); };
+    k.push_back(std::move(s1));
+    KeySpec s2 = number("circuit.S2_mm2", "mm^2",
+                        "effective sectional area of the rod-side (exhaust) valve (default 0.35 "
+                        "meter-out, 20 meter-in)",
+                        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S2_m2; });
+    s2.get_number = [](const Scenario& s) { return s.circuit.S2(); };
+    k.push_back(std::move(s2));
+  }
+  k.push_back(number("supply.pressure_MPa", "MPa (gauge)", "supply pressure Ps above ambient", 1e6,
+                     kPositive, [](auto& s) -> auto& { return s.supply_gauge_Pa; }));
+  k.push_back(number("ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3,
+                     kPositive, [](auto& s) -> auto& { return s.ambient_pressure_Pa; }));
+  k.push_back(number("gas.temperature_K", "K", "temperature of supply air and chambers", 1.0,
+                     kPositive, [](auto& s) -> auto& { return s.temperature_K; }));
+  k.push_back(number("gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
+                     [](auto& s) -> auto& { return s.gas.R_J_per_kgK; }));
+  k.push_back(number("gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law",
+                     1.0, Range{1.0, 1.67, true, false},
+                     [](auto& s) -> auto& { return s.gas.heat_capacity_ratio; }));
+  k.push_back(number("gas.polytropic_exponent", "-",
+                     "k of the chamber equations: 1.4 adiabatic, 1.0 isothermal", 1.0,
+                     Range{1.0, 1.67}, [](auto& s) -> auto& { return s.polytropic_exponent; }));
+  k.push_back(number("cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
+                     [](auto& s) -> auto& { return s.cylinder.bore_m; }));
+  k.push_back(number("cylinder.rod_mm", "mm", "rod diameter, < bore", 1e-3, kNonNegative,
+                     [](auto& s) -> auto& { return s.cylinder.rod_m; }));
+  k.push_back(number("cylinder.stroke_mm", "mm", "stroke length", 1e-3, kPositive,
+                     [](auto& s) -> auto& { return s.cylinder.stroke_m; }));
+  k.push_back(number("cylinder.dead_volume_head_cm3", "cm^3",
+                     "head-side volume at x = 0, tubing included", 1e-6, kPositive,
+                     [](auto& s) -> auto& { return s.cylinder.dead_volume_head_m3; }));
+  k.push_back(number("cylinder.dead_volume_rod_cm3", "cm^3",
+                     "rod-side volume at full stroke, tubing included", 1e-6, kPositive,
+                     [](auto& s) -> auto& { return s.cylinder.dead_volume_rod_m3; }));
+  k.push_back(word<FlowLaw>("valve.law", "valve flow law", {"iso6358", "isentropic"},
+                            [](auto& s) -> auto& { return s.valve.law; }));
+  k.push_back(number("valve.critical_ratio", "-", "critical pressure ratio b (iso6358)", 1.0,
+                     Range{0.0, 1.0, false, true},
+                     [](auto& s) -> auto& { return s.valve.critical_ratio; }));
+  k.push_back(number("valve.laminar_ratio", "-",
+                     "pressure ratio above which the flow is linear in the pressure difference",
+                     1.0, Range{0.9, 1.0, false, true},
+                     [](auto& s) -> auto& { return s.valve.laminar_ratio; }));
+  add_friction_keys(k, "friction.", "piston seal",
+                    [](auto& s) -> auto& { return s.friction; });
+  k.push_back(number("load.mass_kg", "kg",
+                     "moving mass m (rigid: piston, rod and load; spring: the load alone)", 1.0,
+                     kPositive, [](auto& s) -> auto& { return s.load.mass_kg; }));
+  k.push_back(number("load.force_N", "N", "constant external force opposing extension", 1.0,
+                     Range{}, [](auto& s) -> auto& { return s.load.external_force_N; }));
+  k.push_back(word<LoadCoupling>("load.coupling",
+                                 "rigid: one moving mass; spring: the load on its own guide, "
+                                 "coupled to the rod by a spring and damper",
+                                 {"rigid", "spring"},
+                                 [](auto& s) -> auto& { return s.load.coupling; }));
+  k.push_back(number("load.piston_mass_kg", "kg", "piston + rod mass (spring coupling)", 1.0,
+                     kPositive, [](auto& s) -> auto& { return s.load.piston_mass_kg; }));
+  k.push_back(number("load.stiffness_N_per_m", "N/m", "rod-load coupling stiffness", 1.0,
+                     kPositive, [](auto& s) -> auto& { return s.load.coupling_stiffness_N_per_m; }));
+  k.push_back(number("load.damping_Ns_per_m", "N*s/m", "rod-load coupling damping", 1.0,
+                     kNonNegative,
+                     [](auto& s) -> auto& { return s.load.coupling_damping_Ns_per_m; }));
+  add_friction_keys(k, "guide_friction.", "load guide (spring coupling)",
+                    [](auto& s) -> auto& { return s.load.guide_friction; });
+  k.push_back(number("run.duration_s", "s", "simulated time (the run also ends at stroke end)",
+                     1.0, kPositive, [](auto& s) -> auto& { return s.run.duration_s; }));
+  k.push_back(number("run.rate_Hz", "Hz", "output sample rate", 1.0, kPositive,
+                     [](auto& s) -> auto& { return s.run.sample_rate_Hz; }));
+  k.push_back(number("run.rtol", "-", "relative error tolerance of the integrator", 1.0,
+                     Range{1e-14, 1e-2}, [](auto& s) -> auto& { return s.run.relative_tolerance; }));
+  k.push_back(number("run.atol", "-", "absolute error tolerance (SI state units)", 1.0,
+                     Range{1e-16, 1e-2}, [](auto& s) -> auto& { return s.run.absolute_tolerance; }));
+  k.push_back(number("run.max_step_ms", "ms", "largest integration step", 1e-3, kPositive,
+                     [](auto& s) -> auto& { return s.run.max_step_s; }));
+  k.push_back(word<StepperKind>("run.stepper",
+                                "dopri5 (explicit, default) or rosenbrock4 (stiff, for stiff "
+                                "LuGre bristles)",
+                                {"dopri5", "rosenbrock4"},
+                                [](auto& s) -> auto& { return s.run.stepper; }));
+  return k;
+}
+
+const std::vector<KeySpec>& keys() {
+  static const std::vector<KeySpec> table = build_keys();
+  return table;
+}
+
+const KeySpec& find(const std::string& key, const std::string& where) {
+  for (const auto& k : keys()) {
+    if (k.info.key == key) return k;
+  }
+  const auto dot = key.find('.');
+  std::string hint;
+  for (const auto& k : keys()) {
+    if (dot != std::string::npos && k.info.key.compare(0, dot + 1, key, 0, dot + 1) == 0) {
+      hint += (hint.empty() ? "" : ", ") + k.info.key;
+    }
+  }
+  throw Error(where.empty() ? key : where + ": " + key,
+              "unknown scenario key" +
+                  (hint.empty() ? std::string("; see `pneumachaos scenario --keys`")
+                                : "; keys of that section are: " + hint));
+}
+
+std::string format_number(double v) { return fmt::format("{}", v); }
+
+}  // namespace
+
+std::vector<KeyInfo> scenario_key_infos() {
+  std::vector<KeyInfo> out;
+  for (const auto& k : keys()) out.push_back(k.info);
+  return out;
+}
+
+void apply_setting(Scenario& scenario, const std::string& key, const SettingValue& value,
+                   const std::string& where) {
+  const KeySpec& spec = find(key, where);
+  const std::string place = where.empty() ? key : where + ": " + key;
+  if (spec.is_word) {
+    const auto* text = std::get_if<std::string>(&value);
+    if (text == nullptr) {
+      throw Error(place, fmt::format("expected one of {}, got the number {}", spec.info.choices,
+                                     std::get<double>(value)));
+    }
+    for (std::size_t i = 0; i < spec.words.size(); ++i) {
+      if (spec.words[i] == *text) {
+        spec.set_word(scenario, i);
+        return;
+      }
+    }
+    throw Error(place, fmt::format("expected one of {}, got \"{}\"", spec.info.choices, *text));
+  }
+  const auto* number = std::get_if<double>(&value);
+  if (number == nullptr) {
+    throw Error(place, fmt::format("expected a number in {}, got \"{}\"", spec.info.unit,
+                                   std::get<std::string>(value)));
+  }
+  if (!std::isfinite(*number)) {
+    throw Error(place, fmt::format("expected a finite number in {}, got {}", spec.info.unit, *number));
+  }
+  if (!spec.range.contains(*number)) {
+    throw Error(place, fmt::format("{} {} is out of range: expected {}", *number, spec.info.unit,
+                                   spec.info.range));
+  }
+  spec.set_number(scenario, *number * spec.scale);
+}
+
+SettingValue parse_setting_text(const std::string& key, const std::string& text,
+                                const std::string& where) {
+  const KeySpec& spec = find(key, where);
+  if (spec.is_word) return text;
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || ptr != end || text.empty()) {
+    throw Error(where.empty() ? key : where + ": " + key,
+                fmt::format("expected a number in {}, got \"{}\"", spec.info.unit, text));
+  }
+  return v;
+}
+
+std::string setting_text(const Scenario& scenario, const std::string& key) {
+  const KeySpec& spec = find(key, "");
+  if (spec.is_word) return "\"" + spec.words.at(spec.get_word(scenario)) + "\"";
+  return format_number(spec.get_number(scenario) / spec.scale);
+}
+
+std::string scenario_to_toml(const Scenario& scenario) {
+  std::string out =
+      "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n";
+  std::string section;
+  for (const auto& k : keys()) {
+    const auto dot = k.info.key.find('.');
+    const std::string sec = k.info.key.substr(0, dot);
+    if (sec != section) {
+      out += "\n[" + sec + "]\n";
+      section = sec;
+    }
+    const std::string comment =
+        k.is_word ? k.info.choices : k.info.unit + (k.info.range.empty() ? "" : ", " + k.info.range);
+    out += fmt::format("{} = {}  # {} ({})\n", k.info.key.substr(dot + 1),
+                       setting_text(scenario, k.info.key), k.info.description, comment);
+  }
+  return out;
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,77 @@
+#include "pneumachaos/simulate/simulate.hpp"
+
+#include <vector>
+
+namespace pneumachaos {
+
+SimulationOptions SimulationOptions::from(const RunParams& run) {
+  SimulationOptions o;
+  o.duration_s = run.duration_s;
+  o.sample_rate_Hz = run.sample_rate_Hz;
+  o.relative_tolerance = run.relative_tolerance;
+  o.absolute_tolerance = run.absolute_tolerance;
+  o.max_step_s = run.max_step_s;
+  o.stepper = run.stepper;
+  return o;
+}
+
+IntegratorOptions SimulationOptions::integrator_options() const {
+  IntegratorOptions o;
+  o.t_start_s = 0.0;
+  o.t_end_s = duration_s;
+  o.relative_tolerance = relative_tolerance;
+  o.absolute_tolerance = absolute_tolerance;
+  o.max_step_s = max_step_s;
+  o.stepper = stepper;
+  o.sample_rate_Hz = sample_rate_Hz;
+  return o;
+}
+
+SimulationResult simulate(const Plant& plant, const SimulationOptions& options) {
+  return simulate_from(plant, plant.initial_state(), options);
+}
+
+SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,
+                               const SimulationOptions& options) {
+  const IntegratorOptions io = options.integrator_options();
+  io.validate();
+  SimulationResult result{TimeSeries(options.sample_rate_Hz), {}};
+  TimeSeries& ts = result.series;
+  const StateLayout& L = plant.layout();
+  ts.add_channel("x", "m");
+  ts.add_channel("v", "m/s");
+  ts.add_channel("P1", "Pa");
+  ts.add_channel("P2", "Pa");
+  ts.add_channel("F_friction", "N");
+  for (std::size_t i = 0; i < L.seal_z_count; ++i) {
+    ts.add_channel(L.entries[L.seal_z + i].name, L.entries[L.seal_z + i].unit);
+  }
+  if (L.has_load_body()) {
+    ts.add_channel("x_load", "m");
+    ts.add_channel("v_load", "m/s");
+    ts.add_channel("F_guide", "N");
+    for (std::size_t i = 0; i < L.guide_z_count; ++i) {
+      ts.add_channel(L.entries[L.guide_z + i].name, L.entries[L.guide_z + i].unit);
+    }
+  }
+  ts.add_channel("stuck", "-");
+
+  std::vector<double> row;
+  const auto observer = [&](double /*t*/, std::span<const double> x, const Mode& mode) {
+    const PlantOutputs out = plant.outputs(mode, x);
+    row.clear();
+    row.insert(row.end(), {x[L.x], x[L.v], x[L.P1], x[L.P2], out.seal_friction_N});
+    for (std::size_t i = 0; i < L.seal_z_count; ++i) row.push_back(x[L.seal_z + i]);
+    if (L.has_load_body()) {
+      row.insert(row.end(), {x[L.load_x], x[L.load_v], out.guide_friction_N});
+      for (std::size_t i = 0; i < L.guide_z_count; ++i) row.push_back(x[L.guide_z + i]);
+    }
+    row.push_back(out.piston_stuck ? 1.0 : 0.0);
+    ts.append(row);
+  };
+  Mode mode = plant.initial_mode(initial_state, 0.0);
+  result.summary = integrate_hybrid(plant, initial_state, mode, io, observer);
+  return result;
+}
+
+}  // namespace pneumachaos
