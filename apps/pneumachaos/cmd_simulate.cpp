@@ -27,8 +27,9 @@ struct SimulateArgs {
 Action add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Simulate the cylinder and write its time response as CSV (t, x, v, P1, P2, "
-                  "friction force and state, stuck flag)");
+      "simulate",
+      "Simulate the cylinder and write its time response as CSV (t, x, v, P1, P2, "
+      "friction force and state, stuck flag)");
   cmd->add_option("scenario", args->scenario, "scenario TOML file (default: built-in scenario)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--set", args->sets, "override a scenario key, e.g. --set circuit.S2_mm2=0.05")

@@ -11,7 +11,8 @@ namespace pneumachaos {
 
 TimeSeries::TimeSeries(double rate_Hz, double start_s) : rate_Hz_(rate_Hz), start_s_(start_s) {
   if (!(std::isfinite(rate_Hz) && rate_Hz > 0.0)) {
-    throw Error("rate", fmt::format("sample rate must be a positive number of Hz, got {}", rate_Hz));
+    throw Error("rate",
+                fmt::format("sample rate must be a positive number of Hz, got {}", rate_Hz));
   }
 }
 

@@ -1,10 +1,10 @@
 #include "pneumachaos/io/scenario_toml.hpp"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
@@ -30,8 +30,9 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
     } else if (const auto* s = node.as_string()) {
       apply_setting(scenario, key, s->get(), where);
     } else {
-      throw Error(where + ": " + key,
-                  "expected a number or a word; arrays, booleans and dates are not scenario values");
+      throw Error(
+          where + ": " + key,
+          "expected a number or a word; arrays, booleans and dates are not scenario values");
     }
   }
 }
@@ -43,8 +44,8 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
   try {
     doc = toml::parse(toml_text, origin);
   } catch (const toml::parse_error& e) {
-    throw Error(location(origin, e.source()), std::string("TOML syntax error: ") +
-                                                  std::string(e.description()));
+    throw Error(location(origin, e.source()),
+                std::string("TOML syntax error: ") + std::string(e.description()));
   }
   apply_table(scenario, doc, "", origin);
 }

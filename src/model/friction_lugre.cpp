@@ -4,8 +4,8 @@
 
 namespace pneumachaos {
 
-double LuGreFriction::force_N(const FrictionInput& in, int /*direction*/,
-                              std::span<const double> z, std::span<double> dz) const {
+double LuGreFriction::force_N(const FrictionInput& in, int /*direction*/, std::span<const double> z,
+                              std::span<double> dz) const {
   const double v = in.v_m_per_s;
   const double g = stribeck_level_N(in, v);
   const double dzdt = v - p_.sigma0_N_per_m * std::abs(v) * z[0] / g;

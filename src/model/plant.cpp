@@ -26,6 +26,10 @@ Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
   scenario_.validate();
   A1_ = scenario_.cylinder.area_head_m2();
   A2_ = scenario_.cylinder.area_rod_m2();
+  // Chamber and supply air share one temperature (no energy equation), so each valve's
+  // upstream temperature is the same in either flow direction.
+  valve1_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S1(), scenario_.temperature_K);
+  valve2_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S2(), scenario_.temperature_K);
   seal_ = make_friction_model(scenario_.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
@@ -53,12 +57,8 @@ std::vector<double> Plant::initial_state() const {
 }
 
 std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
-  const double T = scenario_.temperature_K;
-  const double W1 = valve_mass_flow(scenario_.valve, scenario_.gas, scenario_.circuit.S1(),
-                                    scenario_.supply_pressure_Pa(), T, P1_Pa, T);
-  const double W2 = valve_mass_flow(scenario_.valve, scenario_.gas, scenario_.circuit.S2(), P2_Pa,
-                                    T, scenario_.ambient_pressure_Pa, T);
-  return {W1, W2};
+  return {valve1_->mass_flow(scenario_.supply_pressure_Pa(), P1_Pa),
+          valve2_->mass_flow(P2_Pa, scenario_.ambient_pressure_Pa)};
 }
 
 double Plant::drive_force(std::size_t contact, std::span<const double> x) const {
@@ -144,7 +144,8 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
   };
   for (std::size_t c = 0; c < contacts_; ++c) {
     const ContactMode m = mode_of(mode, c);
-    if (m == ContactMode::kSlidePos || m == ContactMode::kSlideNeg) add(EventType::kVelocityZero, c);
+    if (m == ContactMode::kSlidePos || m == ContactMode::kSlideNeg)
+      add(EventType::kVelocityZero, c);
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
@@ -244,9 +245,10 @@ Mode Plant::initial_mode(std::span<const double> x, double /*t*/) const {
   const auto start = [&](std::size_t c, double pos, double vel, bool can_stop) {
     if (vel != 0.0) {
       const FrictionModel& f = c == kSeal ? *seal_ : *guide_;
-      set_mode(mode, c, !f.has_stiction() ? ContactMode::kSmooth
-                        : vel > 0         ? ContactMode::kSlidePos
-                                          : ContactMode::kSlideNeg);
+      set_mode(mode, c,
+               !f.has_stiction() ? ContactMode::kSmooth
+               : vel > 0         ? ContactMode::kSlidePos
+                                 : ContactMode::kSlideNeg);
       return;
     }
     set_mode(mode, c, rest_mode(c, x, can_stop && pos <= 0.0));

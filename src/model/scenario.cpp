@@ -17,9 +17,10 @@ constexpr double kMeterInS2 = 20e-6;
 
 void check_friction(const FrictionParams& f, const std::string& prefix) {
   if (f.static_N < f.coulomb_N) {
-    throw Error(prefix + "Fs_N", fmt::format("static friction Fs = {} N must be >= Coulomb friction "
-                                             "Fc = {} N ({}Fc_N)",
-                                             f.static_N, f.coulomb_N, prefix));
+    throw Error(prefix + "Fs_N",
+                fmt::format("static friction Fs = {} N must be >= Coulomb friction "
+                            "Fc = {} N ({}Fc_N)",
+                            f.static_N, f.coulomb_N, prefix));
   }
   if (f.kind != FrictionKind::kClassic && f.static_gain_N_per_Pa < f.coulomb_gain_N_per_Pa) {
     throw Error(prefix + "Fs_gain_N_per_MPa",
@@ -48,7 +49,8 @@ void Scenario::validate() const {
                             valve.critical_ratio));
   }
   check_friction(friction, "friction.");
-  if (load.coupling == LoadCoupling::kSpring) check_friction(load.guide_friction, "guide_friction.");
+  if (load.coupling == LoadCoupling::kSpring)
+    check_friction(load.guide_friction, "guide_friction.");
   if (run.sample_rate_Hz * run.duration_s > 5e8) {
     throw Error("run.rate_Hz", "rate x duration asks for more than 5e8 samples");
   }

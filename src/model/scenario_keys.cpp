@@ -27,7 +27,8 @@ struct Range {
   [[nodiscard]] std::string text() const {
     std::string out;
     if (lo > -kInf) out += fmt::format("{} {}", lo_open ? ">" : ">=", lo);
-    if (hi < kInf) out += fmt::format("{}{} {}", out.empty() ? "" : " and ", hi_open ? "<" : "<=", hi);
+    if (hi < kInf)
+      out += fmt::format("{}{} {}", out.empty() ? "" : " and ", hi_open ? "<" : "<=", hi);
     return out.empty() ? "any finite number" : out;
   }
 };
@@ -87,127 +88,151 @@ KeySpec word(std::string key, std::string description, std::vector<std::string> 
 template <typename Ref>
 void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
                        const std::string& what, Ref ref) {
-  keys.push_back(word<FrictionKind>(prefix + "model", "friction model of the " + what,
-                                    {"classic", "stribeck", "lugre"},
-                                    [ref](auto& s) -> auto& { return ref(s).kind; }));
-  keys.push_back(number(prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0, kNonNegative,
-                        [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
-  keys.push_back(number(prefix + "Fs_N", "N", "static (breakaway) friction Fs, >= Fc", 1.0,
-                        kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_N; }));
-  keys.push_back(number(prefix + "B_Ns_per_m", "N*s/m",
-                        "viscous coefficient B (sigma2 for lugre)", 1.0, kNonNegative,
-                        [ref](auto& s) -> auto& { return ref(s).viscous_Ns_per_m; }));
-  keys.push_back(number(prefix + "vs_mm_per_s", "mm/s", "Stribeck velocity vs", 1e-3, kPositive,
-                        [ref](auto& s) -> auto& { return ref(s).stribeck_velocity_m_per_s; }));
-  keys.push_back(number(prefix + "stribeck_exponent", "-",
-                        "exponent delta of exp(-(|v|/vs)^delta)", 1.0, Range{0.1, 10.0},
-                        [ref](auto& s) -> auto& { return ref(s).stribeck_exponent; }));
-  keys.push_back(number(prefix + "sigma0_N_per_m", "N/m", "LuGre bristle stiffness sigma0", 1.0,
-                        kPositive, [ref](auto& s) -> auto& { return ref(s).sigma0_N_per_m; }));
-  keys.push_back(number(prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
-                        kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
-  keys.push_back(number(prefix + "Fc_gain_N_per_MPa", "N/MPa",
-                        "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
-                        kNonNegative,
-                        [ref](auto& s) -> auto& { return ref(s).coulomb_gain_N_per_Pa; }));
-  keys.push_back(number(prefix + "Fs_gain_N_per_MPa", "N/MPa",
-                        "pressure dependence: Fs grows by this per MPa of P1+P2-2Pa", 1e-6,
-                        kNonNegative,
-                        [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
+  keys.push_back(word<FrictionKind>(
+      prefix + "model", "friction model of the " + what,
+      {"classic", "stribeck", "lugre"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
+  keys.push_back(number(
+      prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
+  keys.push_back(number(
+      prefix + "Fs_N", "N", "static (breakaway) friction Fs, >= Fc", 1.0,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_N; }));
+  keys.push_back(number(
+      prefix + "B_Ns_per_m", "N*s/m", "viscous coefficient B (sigma2 for lugre)", 1.0,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).viscous_Ns_per_m; }));
+  keys.push_back(number(
+      prefix + "vs_mm_per_s", "mm/s", "Stribeck velocity vs", 1e-3,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).stribeck_velocity_m_per_s; }));
+  keys.push_back(number(
+      prefix + "stribeck_exponent", "-", "exponent delta of exp(-(|v|/vs)^delta)", 1.0,
+      Range{0.1, 10.0}, [ref](auto& s) -> auto& { return ref(s).stribeck_exponent; }));
+  keys.push_back(number(
+      prefix + "sigma0_N_per_m", "N/m", "LuGre bristle stiffness sigma0", 1.0,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).sigma0_N_per_m; }));
+  keys.push_back(number(
+      prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  keys.push_back(number(
+      prefix + "Fc_gain_N_per_MPa", "N/MPa",
+      "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_gain_N_per_Pa; }));
+  keys.push_back(number(
+      prefix + "Fs_gain_N_per_MPa", "N/MPa",
+      "pressure dependence: Fs grows by this per MPa of P1+P2-2Pa", 1e-6,
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
 }
 
 std::vector<KeySpec> build_keys() {
   std::vector<KeySpec> k;
-  k.push_back(word<CircuitKind>("circuit.kind",
-                                "meter-out: S2 is the exhaust speed controller (the paper's rig); "
-                                "meter-in: S1 is the supply speed controller",
-                                {"meter-out", "meter-in"},
-                                [](auto& s) -> auto& { return s.circuit.kind; }));
+  k.push_back(word<CircuitKind>(
+      "circuit.kind",
+      "meter-out: S2 is the exhaust speed controller (the paper's rig); "
+      "meter-in: S1 is the supply speed controller",
+      {"meter-out", "meter-in"}, [](auto& s) -> auto& { return s.circuit.kind; }));
   {
-    KeySpec s1 = number("circuit.S1_mm2", "mm^2",
-                        "effective sectional area of the supply-side valve (default 2.70 "
-                        "meter-out, 0.35 meter-in)",
-                        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S1_m2; });
+    KeySpec s1 = number(
+        "circuit.S1_mm2", "mm^2",
+        "effective sectional area of the supply-side valve (default 2.70 "
+        "meter-out, 0.35 meter-in)",
+        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S1_m2; });
     s1.get_number = [](const Scenario& s) { return s.circuit.S1(); };
     k.push_back(std::move(s1));
-    KeySpec s2 = number("circuit.S2_mm2", "mm^2",
-                        "effective sectional area of the rod-side (exhaust) valve (default 0.35 "
-                        "meter-out, 20 meter-in)",
-                        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S2_m2; });
+    KeySpec s2 = number(
+        "circuit.S2_mm2", "mm^2",
+        "effective sectional area of the rod-side (exhaust) valve (default 0.35 "
+        "meter-out, 20 meter-in)",
+        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S2_m2; });
     s2.get_number = [](const Scenario& s) { return s.circuit.S2(); };
     k.push_back(std::move(s2));
   }
-  k.push_back(number("supply.pressure_MPa", "MPa (gauge)", "supply pressure Ps above ambient", 1e6,
-                     kPositive, [](auto& s) -> auto& { return s.supply_gauge_Pa; }));
-  k.push_back(number("ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3,
-                     kPositive, [](auto& s) -> auto& { return s.ambient_pressure_Pa; }));
-  k.push_back(number("gas.temperature_K", "K", "temperature of supply air and chambers", 1.0,
-                     kPositive, [](auto& s) -> auto& { return s.temperature_K; }));
-  k.push_back(number("gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
-                     [](auto& s) -> auto& { return s.gas.R_J_per_kgK; }));
-  k.push_back(number("gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law",
-                     1.0, Range{1.0, 1.67, true, false},
-                     [](auto& s) -> auto& { return s.gas.heat_capacity_ratio; }));
-  k.push_back(number("gas.polytropic_exponent", "-",
-                     "k of the chamber equations: 1.4 adiabatic, 1.0 isothermal", 1.0,
-                     Range{1.0, 1.67}, [](auto& s) -> auto& { return s.polytropic_exponent; }));
-  k.push_back(number("cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
-                     [](auto& s) -> auto& { return s.cylinder.bore_m; }));
-  k.push_back(number("cylinder.rod_mm", "mm", "rod diameter, < bore", 1e-3, kNonNegative,
-                     [](auto& s) -> auto& { return s.cylinder.rod_m; }));
-  k.push_back(number("cylinder.stroke_mm", "mm", "stroke length", 1e-3, kPositive,
-                     [](auto& s) -> auto& { return s.cylinder.stroke_m; }));
-  k.push_back(number("cylinder.dead_volume_head_cm3", "cm^3",
-                     "head-side volume at x = 0, tubing included", 1e-6, kPositive,
-                     [](auto& s) -> auto& { return s.cylinder.dead_volume_head_m3; }));
-  k.push_back(number("cylinder.dead_volume_rod_cm3", "cm^3",
-                     "rod-side volume at full stroke, tubing included", 1e-6, kPositive,
-                     [](auto& s) -> auto& { return s.cylinder.dead_volume_rod_m3; }));
-  k.push_back(word<FlowLaw>("valve.law", "valve flow law", {"iso6358", "isentropic"},
-                            [](auto& s) -> auto& { return s.valve.law; }));
-  k.push_back(number("valve.critical_ratio", "-", "critical pressure ratio b (iso6358)", 1.0,
-                     Range{0.0, 1.0, false, true},
-                     [](auto& s) -> auto& { return s.valve.critical_ratio; }));
-  k.push_back(number("valve.laminar_ratio", "-",
-                     "pressure ratio above which the flow is linear in the pressure difference",
-                     1.0, Range{0.9, 1.0, false, true},
-                     [](auto& s) -> auto& { return s.valve.laminar_ratio; }));
-  add_friction_keys(k, "friction.", "piston seal",
-                    [](auto& s) -> auto& { return s.friction; });
-  k.push_back(number("load.mass_kg", "kg",
-                     "moving mass m (rigid: piston, rod and load; spring: the load alone)", 1.0,
-                     kPositive, [](auto& s) -> auto& { return s.load.mass_kg; }));
-  k.push_back(number("load.force_N", "N", "constant external force opposing extension", 1.0,
-                     Range{}, [](auto& s) -> auto& { return s.load.external_force_N; }));
-  k.push_back(word<LoadCoupling>("load.coupling",
-                                 "rigid: one moving mass; spring: the load on its own guide, "
-                                 "coupled to the rod by a spring and damper",
-                                 {"rigid", "spring"},
-                                 [](auto& s) -> auto& { return s.load.coupling; }));
-  k.push_back(number("load.piston_mass_kg", "kg", "piston + rod mass (spring coupling)", 1.0,
-                     kPositive, [](auto& s) -> auto& { return s.load.piston_mass_kg; }));
-  k.push_back(number("load.stiffness_N_per_m", "N/m", "rod-load coupling stiffness", 1.0,
-                     kPositive, [](auto& s) -> auto& { return s.load.coupling_stiffness_N_per_m; }));
-  k.push_back(number("load.damping_Ns_per_m", "N*s/m", "rod-load coupling damping", 1.0,
-                     kNonNegative,
-                     [](auto& s) -> auto& { return s.load.coupling_damping_Ns_per_m; }));
-  add_friction_keys(k, "guide_friction.", "load guide (spring coupling)",
-                    [](auto& s) -> auto& { return s.load.guide_friction; });
-  k.push_back(number("run.duration_s", "s", "simulated time (the run also ends at stroke end)",
-                     1.0, kPositive, [](auto& s) -> auto& { return s.run.duration_s; }));
-  k.push_back(number("run.rate_Hz", "Hz", "output sample rate", 1.0, kPositive,
-                     [](auto& s) -> auto& { return s.run.sample_rate_Hz; }));
-  k.push_back(number("run.rtol", "-", "relative error tolerance of the integrator", 1.0,
-                     Range{1e-14, 1e-2}, [](auto& s) -> auto& { return s.run.relative_tolerance; }));
-  k.push_back(number("run.atol", "-", "absolute error tolerance (SI state units)", 1.0,
-                     Range{1e-16, 1e-2}, [](auto& s) -> auto& { return s.run.absolute_tolerance; }));
-  k.push_back(number("run.max_step_ms", "ms", "largest integration step", 1e-3, kPositive,
-                     [](auto& s) -> auto& { return s.run.max_step_s; }));
-  k.push_back(word<StepperKind>("run.stepper",
-                                "dopri5 (explicit, default) or rosenbrock4 (stiff, for stiff "
-                                "LuGre bristles)",
-                                {"dopri5", "rosenbrock4"},
-                                [](auto& s) -> auto& { return s.run.stepper; }));
+  k.push_back(number(
+      "supply.pressure_MPa", "MPa (gauge)", "supply pressure Ps above ambient", 1e6, kPositive,
+      [](auto& s) -> auto& { return s.supply_gauge_Pa; }));
+  k.push_back(number(
+      "ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3, kPositive,
+      [](auto& s) -> auto& { return s.ambient_pressure_Pa; }));
+  k.push_back(number(
+      "gas.temperature_K", "K", "temperature of supply air and chambers", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.temperature_K; }));
+  k.push_back(number(
+      "gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.gas.R_J_per_kgK; }));
+  k.push_back(number(
+      "gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law", 1.0,
+      Range{1.0, 1.67, true, false}, [](auto& s) -> auto& { return s.gas.heat_capacity_ratio; }));
+  k.push_back(number(
+      "gas.polytropic_exponent", "-", "k of the chamber equations: 1.4 adiabatic, 1.0 isothermal",
+      1.0, Range{1.0, 1.67}, [](auto& s) -> auto& { return s.polytropic_exponent; }));
+  k.push_back(number(
+      "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
+      [](auto& s) -> auto& { return s.cylinder.bore_m; }));
+  k.push_back(number(
+      "cylinder.rod_mm", "mm", "rod diameter, < bore", 1e-3, kNonNegative,
+      [](auto& s) -> auto& { return s.cylinder.rod_m; }));
+  k.push_back(number(
+      "cylinder.stroke_mm", "mm", "stroke length", 1e-3, kPositive,
+      [](auto& s) -> auto& { return s.cylinder.stroke_m; }));
+  k.push_back(number(
+      "cylinder.dead_volume_head_cm3", "cm^3", "head-side volume at x = 0, tubing included", 1e-6,
+      kPositive, [](auto& s) -> auto& { return s.cylinder.dead_volume_head_m3; }));
+  k.push_back(number(
+      "cylinder.dead_volume_rod_cm3", "cm^3", "rod-side volume at full stroke, tubing included",
+      1e-6, kPositive, [](auto& s) -> auto& { return s.cylinder.dead_volume_rod_m3; }));
+  k.push_back(word<FlowLaw>(
+      "valve.law", "valve flow law", {"iso6358", "isentropic"},
+      [](auto& s) -> auto& { return s.valve.law; }));
+  k.push_back(number(
+      "valve.critical_ratio", "-", "critical pressure ratio b (iso6358)", 1.0,
+      Range{0.0, 1.0, false, true}, [](auto& s) -> auto& { return s.valve.critical_ratio; }));
+  k.push_back(number(
+      "valve.laminar_ratio", "-",
+      "pressure ratio above which the flow is linear in the pressure difference", 1.0,
+      Range{0.9, 1.0, false, true}, [](auto& s) -> auto& { return s.valve.laminar_ratio; }));
+  add_friction_keys(
+      k, "friction.", "piston seal", [](auto& s) -> auto& { return s.friction; });
+  k.push_back(number(
+      "load.mass_kg", "kg", "moving mass m (rigid: piston, rod and load; spring: the load alone)",
+      1.0, kPositive, [](auto& s) -> auto& { return s.load.mass_kg; }));
+  k.push_back(number(
+      "load.force_N", "N", "constant external force opposing extension", 1.0, Range{},
+      [](auto& s) -> auto& { return s.load.external_force_N; }));
+  k.push_back(word<LoadCoupling>(
+      "load.coupling",
+      "rigid: one moving mass; spring: the load on its own guide, "
+      "coupled to the rod by a spring and damper",
+      {"rigid", "spring"}, [](auto& s) -> auto& { return s.load.coupling; }));
+  k.push_back(number(
+      "load.piston_mass_kg", "kg", "piston + rod mass (spring coupling)", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.load.piston_mass_kg; }));
+  k.push_back(number(
+      "load.stiffness_N_per_m", "N/m", "rod-load coupling stiffness", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.load.coupling_stiffness_N_per_m; }));
+  k.push_back(number(
+      "load.damping_Ns_per_m", "N*s/m", "rod-load coupling damping", 1.0, kNonNegative,
+      [](auto& s) -> auto& { return s.load.coupling_damping_Ns_per_m; }));
+  add_friction_keys(
+      k, "guide_friction.", "load guide (spring coupling)",
+      [](auto& s) -> auto& { return s.load.guide_friction; });
+  k.push_back(number(
+      "run.duration_s", "s", "simulated time (the run also ends at stroke end)", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.run.duration_s; }));
+  k.push_back(number(
+      "run.rate_Hz", "Hz", "output sample rate", 1.0, kPositive,
+      [](auto& s) -> auto& { return s.run.sample_rate_Hz; }));
+  k.push_back(number(
+      "run.rtol", "-", "relative error tolerance of the integrator", 1.0, Range{1e-14, 1e-2},
+      [](auto& s) -> auto& { return s.run.relative_tolerance; }));
+  k.push_back(number(
+      "run.atol", "-", "absolute error tolerance (SI state units)", 1.0, Range{1e-16, 1e-2},
+      [](auto& s) -> auto& { return s.run.absolute_tolerance; }));
+  k.push_back(number(
+      "run.max_step_ms", "ms", "largest integration step", 1e-3, kPositive,
+      [](auto& s) -> auto& { return s.run.max_step_s; }));
+  k.push_back(word<StepperKind>(
+      "run.stepper",
+      "dopri5 (explicit, default) or rosenbrock4 (stiff, for stiff "
+      "LuGre bristles)",
+      {"dopri5", "rosenbrock4"}, [](auto& s) -> auto& { return s.run.stepper; }));
   return k;
 }
 
@@ -227,10 +252,10 @@ const KeySpec& find(const std::string& key, const std::string& where) {
       hint += (hint.empty() ? "" : ", ") + k.info.key;
     }
   }
-  throw Error(where.empty() ? key : where + ": " + key,
-              "unknown scenario key" +
-                  (hint.empty() ? std::string("; see `pneumachaos scenario --keys`")
-                                : "; keys of that section are: " + hint));
+  throw Error(
+      where.empty() ? key : where + ": " + key,
+      "unknown scenario key" + (hint.empty() ? std::string("; see `pneumachaos scenario --keys`")
+                                             : "; keys of that section are: " + hint));
 }
 
 std::string format_number(double v) { return fmt::format("{}", v); }
@@ -267,7 +292,8 @@ void apply_setting(Scenario& scenario, const std::string& key, const SettingValu
                                    std::get<std::string>(value)));
   }
   if (!std::isfinite(*number)) {
-    throw Error(place, fmt::format("expected a finite number in {}, got {}", spec.info.unit, *number));
+    throw Error(place,
+                fmt::format("expected a finite number in {}, got {}", spec.info.unit, *number));
   }
   if (!spec.range.contains(*number)) {
     throw Error(place, fmt::format("{} {} is out of range: expected {}", *number, spec.info.unit,
@@ -308,7 +334,8 @@ std::string scenario_to_toml(const Scenario& scenario) {
       section = sec;
     }
     const std::string comment =
-        k.is_word ? k.info.choices : k.info.unit + (k.info.range.empty() ? "" : ", " + k.info.range);
+        k.is_word ? k.info.choices
+                  : k.info.unit + (k.info.range.empty() ? "" : ", " + k.info.range);
     out += fmt::format("{} = {}  # {} ({})\n", k.info.key.substr(dot + 1),
                        setting_text(scenario, k.info.key), k.info.description, comment);
   }

@@ -4,54 +4,64 @@
 #include <cmath>
 
 namespace pneumachaos {
-namespace {
-
-// psi without the laminar branch, for 0 <= r <= 1.
-double raw_flow_function(const ValveLaw& valve, const GasConstants& gas, double r) {
-  if (valve.law == FlowLaw::kIso6358) {
-    const double b = valve.critical_ratio;
-    if (r <= b) return 1.0;
-    const double q = (r - b) / (1.0 - b);
-    return std::sqrt(std::max(0.0, 1.0 - q * q));
-  }
-  // Isentropic nozzle, normalised by its choked value so psi = 1 when choked.
-  const double k = gas.heat_capacity_ratio;
-  const double r_crit = std::pow(2.0 / (k + 1.0), k / (k - 1.0));
-  if (r <= r_crit) return 1.0;
-  const double flux = std::sqrt(std::max(0.0, std::pow(r, 2.0 / k) - std::pow(r, (k + 1.0) / k)));
-  const double flux_crit =
-      std::sqrt(std::pow(r_crit, 2.0 / k) - std::pow(r_crit, (k + 1.0) / k));
-  return flux / flux_crit;
-}
-
-}  // namespace
 
 double choked_flux_factor(const GasConstants& gas, double T_up_K) {
   const double k = gas.heat_capacity_ratio;
   // The k -> 1 limit of (2/(k+1))^((k+1)/(2(k-1))) is exp(-1/2); guard the removable 0/0.
-  const double expo = std::abs(k - 1.0) < 1e-9 ? std::exp(-0.5)
-                                                : std::pow(2.0 / (k + 1.0), (k + 1.0) / (2.0 * (k - 1.0)));
+  const double expo = std::abs(k - 1.0) < 1e-9
+                          ? std::exp(-0.5)
+                          : std::pow(2.0 / (k + 1.0), (k + 1.0) / (2.0 * (k - 1.0)));
   return std::sqrt(k / (gas.R_J_per_kgK * T_up_K)) * expo;
 }
 
-double flow_function(const ValveLaw& valve, const GasConstants& gas, double r) {
+Orifice::Orifice(const ValveLaw& valve, const GasConstants& gas, double S_m2, double T_K)
+    : valve_(valve),
+      k_(gas.heat_capacity_ratio),
+      coefficient_(S_m2 * choked_flux_factor(gas, T_K)),
+      r_crit_(valve.law == FlowLaw::kIso6358 ? valve.critical_ratio
+                                             : std::pow(2.0 / (k_ + 1.0), k_ / (k_ - 1.0))) {
+  if (valve_.law == FlowLaw::kIsentropic) {
+    // Normalise the nozzle's flux by its choked value so that psi = 1 when choked.
+    inv_flux_crit_ =
+        1.0 / std::sqrt(std::pow(r_crit_, 2.0 / k_) - std::pow(r_crit_, (k_ + 1.0) / k_));
+  }
+  psi_lam_ = raw_psi(valve_.laminar_ratio);
+}
+
+double Orifice::raw_psi(double r) const {
+  if (r <= r_crit_) return 1.0;
+  if (valve_.law == FlowLaw::kIso6358) {
+    const double q = (r - r_crit_) / (1.0 - r_crit_);
+    return std::sqrt(std::max(0.0, 1.0 - q * q));
+  }
+  const double flux = std::pow(r, 2.0 / k_) - std::pow(r, (k_ + 1.0) / k_);
+  return std::sqrt(std::max(0.0, flux)) * inv_flux_crit_;
+}
+
+double Orifice::psi(double r) const {
   r = std::clamp(r, 0.0, 1.0);
-  const double r_lam = valve.laminar_ratio;
-  if (r <= r_lam) return raw_flow_function(valve, gas, r);
-  // Linear in (1 - r) = (P_up - P_down)/P_up, equal to the law at r_lam.
-  return raw_flow_function(valve, gas, r_lam) * (1.0 - r) / (1.0 - r_lam);
+  const double r_lam = valve_.laminar_ratio;
+  if (r <= r_lam) return raw_psi(r);
+  // Linear in (1 - r) = (P_up - P_down)/P_up, equal to the law at r_lam: the ellipse's
+  // infinite slope at r = 1 would otherwise stall the integrator.
+  return psi_lam_ * (1.0 - r) / (1.0 - r_lam);
+}
+
+double Orifice::mass_flow(double P_a_Pa, double P_b_Pa) const {
+  if (coefficient_ <= 0.0 || P_a_Pa == P_b_Pa) return 0.0;
+  if (P_a_Pa > P_b_Pa) return coefficient_ * P_a_Pa * psi(P_b_Pa / P_a_Pa);
+  return -coefficient_ * P_b_Pa * psi(P_a_Pa / P_b_Pa);
+}
+
+double flow_function(const ValveLaw& valve, const GasConstants& gas, double r) {
+  return Orifice(valve, gas, 0.0, 293.15).psi(r);
 }
 
 double valve_mass_flow(const ValveLaw& valve, const GasConstants& gas, double S_m2, double P_a_Pa,
                        double T_a_K, double P_b_Pa, double T_b_K) {
-  if (S_m2 <= 0.0 || P_a_Pa == P_b_Pa) return 0.0;
-  const bool forward = P_a_Pa > P_b_Pa;
-  const double P_up = forward ? P_a_Pa : P_b_Pa;
-  const double P_down = forward ? P_b_Pa : P_a_Pa;
-  const double T_up = forward ? T_a_K : T_b_K;
-  const double W = S_m2 * P_up * choked_flux_factor(gas, T_up) *
-                   flow_function(valve, gas, P_down / P_up);
-  return forward ? W : -W;
+  // Reverse flow carries the other node's temperature.
+  return P_a_Pa >= P_b_Pa ? Orifice(valve, gas, S_m2, T_a_K).mass_flow(P_a_Pa, P_b_Pa)
+                          : Orifice(valve, gas, S_m2, T_b_K).mass_flow(P_a_Pa, P_b_Pa);
 }
 
 }  // namespace pneumachaos

@@ -34,12 +34,23 @@ bool all_finite(std::span<const double> x) {
 
 void count_event(EventCounts& c, EventKind kind) {
   switch (kind) {
-    case EventKind::kStick: ++c.stick; break;
-    case EventKind::kSlip: ++c.slip; break;
-    case EventKind::kReversal: ++c.reversal; break;
-    case EventKind::kStopHit: ++c.stop_hit; break;
-    case EventKind::kStopRelease: ++c.stop_release; break;
-    case EventKind::kTerminal: break;
+    case EventKind::kStick:
+      ++c.stick;
+      break;
+    case EventKind::kSlip:
+      ++c.slip;
+      break;
+    case EventKind::kReversal:
+      ++c.reversal;
+      break;
+    case EventKind::kStopHit:
+      ++c.stop_hit;
+      break;
+    case EventKind::kStopRelease:
+      ++c.stop_release;
+      break;
+    case EventKind::kTerminal:
+      break;
   }
 }
 
@@ -74,8 +85,8 @@ class Sampler {
 };
 
 template <typename Stepper>
-IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode,
-                       const IntegratorOptions& o, const SampleObserver& observer) {
+IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const IntegratorOptions& o,
+                       const SampleObserver& observer) {
   IntegrationSummary s;
   Stepper stepper(ModeRhs{&system, &mode, &s.rhs_evaluations}, o.absolute_tolerance,
                   o.relative_tolerance);
@@ -134,18 +145,24 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode,
         events(scratch, tau, g_new);
         return g_new[i];
       };
+      // The transition is applied where g is strictly negative: at a point where g is still
+      // exactly zero (e.g. a drive force of exactly 0 at rest) the new mode is undecidable.
+      double lower = stepper.t_old();
       double upper = t_new;
       if (g_old[i] > 0.0) {
         std::uintmax_t iterations = 64;
-        const double g_lo = g_old[i];
-        const double g_hi = g_at(t_new);
         const auto bracket = boost::math::tools::toms748_solve(
-            g_at, stepper.t_old(), t_new, g_lo, g_hi,
+            g_at, lower, upper, g_old[i], g_at(upper),
             boost::math::tools::eps_tolerance<double>(50), iterations);
-        // The right end of the bracket is on the side where the event has happened.
+        lower = bracket.first;
         upper = bracket.second;
-      } else {
-        upper = stepper.t_old();  // the mode was left at the very start of the step
+      }
+      if (!(g_at(upper) < 0.0)) upper = t_new;
+      // Bisection on "g < 0" narrows a degenerate start (g = 0 at t_old) or an exact root.
+      while (upper - lower > t_tiny * std::max(1.0, std::abs(upper))) {
+        const double mid = 0.5 * (lower + upper);
+        if (mid <= lower || mid >= upper) break;
+        (g_at(mid) < 0.0 ? upper : lower) = mid;
       }
       if (upper < t_event || which == g_new.size()) {
         t_event = upper;
@@ -171,9 +188,8 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode,
 
     sampler.emit_until(t_event, mode, interp);
     interp(t_event, x);
-    events_here = (t_event - last_event_t <= t_tiny * std::max(1.0, std::abs(t_event)))
-                      ? events_here + 1
-                      : 1;
+    events_here =
+        (t_event - last_event_t <= t_tiny * std::max(1.0, std::abs(t_event))) ? events_here + 1 : 1;
     last_event_t = t_event;
     if (events_here > o.max_events_at_one_instant) {
       s.termination = Termination::kChattering;
@@ -184,6 +200,7 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode,
     }
     const EventOutcome outcome = system.apply_event(which, mode, x, t_event);
     count_event(s.events, outcome.kind);
+    if (o.record_events) s.event_log.push_back({t_event, outcome.kind});
     t = t_event;
     if (outcome.terminate) {
       s.termination = Termination::kTerminalEvent;
@@ -209,8 +226,8 @@ void IntegratorOptions::validate() const {
     }
   };
   if (!(std::isfinite(t_end_s) && std::isfinite(t_start_s) && t_end_s > t_start_s)) {
-    throw Error("t_end_s", fmt::format("must be finite and after t_start_s = {}, got {}",
-                                       t_start_s, t_end_s));
+    throw Error("t_end_s",
+                fmt::format("must be finite and after t_start_s = {}, got {}", t_start_s, t_end_s));
   }
   positive(relative_tolerance, "relative_tolerance");
   positive(absolute_tolerance, "absolute_tolerance");
@@ -223,10 +240,14 @@ void IntegratorOptions::validate() const {
 
 const char* termination_name(Termination t) {
   switch (t) {
-    case Termination::kDurationReached: return "duration_reached";
-    case Termination::kTerminalEvent: return "terminal_event";
-    case Termination::kSolverFailure: return "solver_failure";
-    case Termination::kChattering: return "chattering";
+    case Termination::kDurationReached:
+      return "duration_reached";
+    case Termination::kTerminalEvent:
+      return "terminal_event";
+    case Termination::kSolverFailure:
+      return "solver_failure";
+    case Termination::kChattering:
+      return "chattering";
   }
   return "?";
 }
@@ -236,8 +257,8 @@ IntegrationSummary integrate_hybrid(const HybridSystem& system, std::vector<doub
                                     const SampleObserver& observer) {
   options.validate();
   if (x.size() != system.state_size()) {
-    throw Error("initial state", fmt::format("has {} values, the system {}", x.size(),
-                                             system.state_size()));
+    throw Error("initial state",
+                fmt::format("has {} values, the system {}", x.size(), system.state_size()));
   }
   const auto started = std::chrono::steady_clock::now();
   IntegrationSummary s;

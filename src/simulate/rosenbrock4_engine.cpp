@@ -13,52 +13,52 @@ namespace odeint = boost::numeric::odeint;
 using UVec = boost::numeric::ublas::vector<double>;
 using UMat = boost::numeric::ublas::matrix<double>;
 
-namespace {
-void to_u(const State& x, UVec& u) {
-  u.resize(x.size(), false);
-  for (std::size_t i = 0; i < x.size(); ++i) u[i] = x[i];
-}
-void from_u(const UVec& u, State& x) {
-  x.resize(u.size());
-  for (std::size_t i = 0; i < u.size(); ++i) x[i] = u[i];
-}
-}  // namespace
-
+// Odeint's Rosenbrock 4 loses its order on non-autonomous systems even with an exact df/dt
+// (seen on x'' = -100 x + 5 t: the step count grows like 1/tol). So the engine integrates the
+// autonomous system (x, tau) with dtau/dt = 1, where df/dt is an ordinary Jacobian column.
 struct Rosenbrock4Engine::Impl {
   RhsFunction rhs;
   odeint::rosenbrock4_controller<odeint::rosenbrock4<double>> controlled;
-  UVec x_old, x_new, x_tmp, x_interp;
+  UVec x_old, x_new, x_tmp, x_interp;  // augmented: n states, then time
   State state, a, f0, f1;
+  std::size_t n = 0;
   double t_old = 0.0, t_new = 0.0;
+  // Below this magnitude a component counts as small (the error control's own view of it),
+  // which bounds the difference step away from zero; a step at rounding level makes the
+  // Jacobian noise and Rosenbrock's order collapses.
+  double typical_magnitude;
 
-  Impl(RhsFunction f, double atol, double rtol) : rhs(std::move(f)), controlled(atol, rtol) {}
+  Impl(RhsFunction f, double atol, double rtol)
+      : rhs(std::move(f)), controlled(atol, rtol), typical_magnitude(atol / rtol) {}
 
-  void eval(const UVec& x, UVec& dxdt, double t) {
-    from_u(x, a);
-    f0.resize(a.size());
-    rhs(a, f0, t);
-    to_u(f0, dxdt);
+  void eval(const UVec& xa, UVec& dxa) {
+    a.resize(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = xa[i];
+    f0.resize(n);
+    rhs(a, f0, xa[n]);
+    dxa.resize(n + 1, false);
+    for (std::size_t i = 0; i < n; ++i) dxa[i] = f0[i];
+    dxa[n] = 1.0;
   }
 
   // The Jacobian by forward differences of the same right-hand side, so that no model has to
   // supply one by hand; the step is ~sqrt(machine epsilon) relative to each component.
-  void jacobian(const UVec& x, UMat& J, double t, UVec& dfdt) {
-    const std::size_t n = x.size();
-    from_u(x, a);
-    f0.resize(n);
-    f1.resize(n);
-    rhs(a, f0, t);
-    J.resize(n, n, false);
-    for (std::size_t j = 0; j < n; ++j) {
-      const double xj = a[j];
-      const double h = 1.5e-8 * std::max(std::abs(xj), 1e-6);
-      a[j] = xj + h;
-      rhs(a, f1, t);
-      a[j] = xj;
-      for (std::size_t i = 0; i < n; ++i) J(i, j) = (f1[i] - f0[i]) / h;
+  void jacobian(const UVec& xa, UMat& J, UVec& dfdt) {
+    const std::size_t m = n + 1;
+    UVec base(m), probe(m), f_probe(m);
+    eval(xa, base);
+    probe = xa;
+    J.resize(m, m, false);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double xj = xa[j];
+      const double h = 1.5e-8 * std::max(std::abs(xj), typical_magnitude);
+      probe[j] = xj + h;
+      eval(probe, f_probe);
+      probe[j] = xj;
+      for (std::size_t i = 0; i < m; ++i) J(i, j) = (f_probe[i] - base[i]) / h;
     }
-    dfdt.resize(n, false);
-    for (std::size_t i = 0; i < n; ++i) dfdt[i] = 0.0;  // autonomous within a mode
+    dfdt.resize(m, false);
+    for (std::size_t i = 0; i < m; ++i) dfdt[i] = 0.0;  // autonomous by construction
   }
 };
 
@@ -67,19 +67,23 @@ Rosenbrock4Engine::Rosenbrock4Engine(RhsFunction rhs, double atol, double rtol)
 Rosenbrock4Engine::~Rosenbrock4Engine() = default;
 
 void Rosenbrock4Engine::initialize(const State& x, double t) {
-  to_u(x, impl_->x_new);
-  impl_->x_old = impl_->x_new;
-  impl_->x_tmp.resize(x.size(), false);  // odeint writes into caller-sized outputs
-  impl_->x_interp.resize(x.size(), false);
-  impl_->state = x;
-  impl_->t_new = impl_->t_old = t;
+  Impl& m = *impl_;
+  m.n = x.size();
+  m.x_new.resize(m.n + 1, false);
+  for (std::size_t i = 0; i < m.n; ++i) m.x_new[i] = x[i];
+  m.x_new[m.n] = t;
+  m.x_old = m.x_new;
+  m.x_tmp.resize(m.n + 1, false);  // odeint writes into caller-sized outputs
+  m.x_interp.resize(m.n + 1, false);
+  m.state = x;
+  m.t_new = m.t_old = t;
 }
 
 bool Rosenbrock4Engine::try_step(double& dt) {
   Impl& m = *impl_;
   double t = m.t_new;
-  auto rhs = [&m](const UVec& x, UVec& dxdt, double tt) { m.eval(x, dxdt, tt); };
-  auto jac = [&m](const UVec& x, UMat& J, double tt, UVec& dfdt) { m.jacobian(x, J, tt, dfdt); };
+  auto rhs = [&m](const UVec& x, UVec& dxdt, double) { m.eval(x, dxdt); };
+  auto jac = [&m](const UVec& x, UMat& J, double, UVec& dfdt) { m.jacobian(x, J, dfdt); };
   const auto res = m.controlled.try_step(std::make_pair(rhs, jac), m.x_new, t, m.x_tmp, dt);
   if (res == odeint::fail) return false;
   m.controlled.stepper().prepare_dense_output();
@@ -87,14 +91,14 @@ bool Rosenbrock4Engine::try_step(double& dt) {
   std::swap(m.x_new, m.x_tmp);
   m.t_old = m.t_new;
   m.t_new = t;
-  from_u(m.x_new, m.state);
+  m.state.assign(m.x_new.begin(), m.x_new.begin() + static_cast<std::ptrdiff_t>(m.n));
   return true;
 }
 
 void Rosenbrock4Engine::calc_state(double t, State& out) {
   Impl& m = *impl_;
   m.controlled.stepper().calc_state(t, m.x_interp, m.x_old, m.t_old, m.x_new, m.t_new);
-  from_u(m.x_interp, out);
+  out.assign(m.x_interp.begin(), m.x_interp.begin() + static_cast<std::ptrdiff_t>(m.n));
 }
 
 const State& Rosenbrock4Engine::state() const { return impl_->state; }

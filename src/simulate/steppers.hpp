@@ -13,16 +13,15 @@
 
 namespace pneumachaos::detail {
 
-
 /// System callable: f(x, dxdt, t) on std::vector states.
 template <typename Rhs>
 class Dopri5Stepper {
  public:
   Dopri5Stepper(Rhs rhs, double atol, double rtol)
       : rhs_(std::move(rhs)),
-        controlled_(boost::numeric::odeint::default_error_checker<double, boost::numeric::odeint::range_algebra,
-                                                            boost::numeric::odeint::default_operations>(
-            atol, rtol, 1, 1)) {}
+        controlled_(boost::numeric::odeint::default_error_checker<
+                    double, boost::numeric::odeint::range_algebra,
+                    boost::numeric::odeint::default_operations>(atol, rtol, 1, 1)) {}
 
   void initialize(const State& x, double t) {
     x_new_ = x;

@@ -12,7 +12,9 @@ struct CylinderGeometry {
 
   [[nodiscard]] double area_head_m2() const;  ///< A1, full bore
   [[nodiscard]] double area_rod_m2() const;   ///< A2, annulus
-  [[nodiscard]] double volume_head_m3(double x_m) const { return dead_volume_head_m3 + area_head_m2() * x_m; }
+  [[nodiscard]] double volume_head_m3(double x_m) const {
+    return dead_volume_head_m3 + area_head_m2() * x_m;
+  }
   [[nodiscard]] double volume_rod_m3(double x_m) const {
     return dead_volume_rod_m3 + area_rod_m2() * (stroke_m - x_m);
   }

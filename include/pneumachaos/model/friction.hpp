@@ -13,13 +13,13 @@ enum class FrictionKind { kClassic, kStribeck, kLuGre };
 /// Forces in N, velocities in m/s, pressures in Pa.
 struct FrictionParams {
   FrictionKind kind = FrictionKind::kStribeck;
-  double coulomb_N = 20.0;               ///< Fc, kinetic friction level
-  double static_N = 40.0;                ///< Fs, breakaway (stiction) level
-  double viscous_Ns_per_m = 30.0;        ///< B (classic, stribeck) = sigma2 (lugre)
+  double coulomb_N = 20.0;                  ///< Fc, kinetic friction level
+  double static_N = 40.0;                   ///< Fs, breakaway (stiction) level
+  double viscous_Ns_per_m = 30.0;           ///< B (classic, stribeck) = sigma2 (lugre)
   double stribeck_velocity_m_per_s = 0.01;  ///< vs
-  double stribeck_exponent = 2.0;        ///< delta in exp(-(|v|/vs)^delta)
-  double sigma0_N_per_m = 1.0e5;         ///< LuGre bristle stiffness
-  double sigma1_Ns_per_m = 300.0;        ///< LuGre bristle damping
+  double stribeck_exponent = 2.0;           ///< delta in exp(-(|v|/vs)^delta)
+  double sigma0_N_per_m = 1.0e5;            ///< LuGre bristle stiffness
+  double sigma1_Ns_per_m = 300.0;           ///< LuGre bristle damping
   /// Pressure dependence (MODEL.md item 4): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
   double coulomb_gain_N_per_Pa = 0.0;
   double static_gain_N_per_Pa = 0.0;
@@ -27,9 +27,9 @@ struct FrictionParams {
 
 /// What a friction model sees of the plant.
 struct FrictionInput {
-  double v_m_per_s = 0.0;          ///< sliding velocity of the contact
-  double gauge_sum_Pa = 0.0;       ///< P1 + P2 - 2 Pa (0 for a contact not on the seal)
-  double position_m = 0.0;         ///< position along the contact (for textures)
+  double v_m_per_s = 0.0;     ///< sliding velocity of the contact
+  double gauge_sum_Pa = 0.0;  ///< P1 + P2 - 2 Pa (0 for a contact not on the seal)
+  double position_m = 0.0;    ///< position along the contact (for textures)
 };
 
 class FrictionModel {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "pneumachaos/core/hybrid_system.hpp"
@@ -64,7 +65,13 @@ class Plant final : public HybridSystem {
   [[nodiscard]] std::array<double, 2> mass_flows(double P1_Pa, double P2_Pa) const;
 
  private:
-  enum class EventType : std::uint8_t { kVelocityZero, kBreakaway, kStopRelease, kStopHit, kStrokeEnd };
+  enum class EventType : std::uint8_t {
+    kVelocityZero,
+    kBreakaway,
+    kStopRelease,
+    kStopHit,
+    kStrokeEnd
+  };
   struct ActiveEvent {
     EventType type;
     std::uint8_t contact;
@@ -88,6 +95,8 @@ class Plant final : public HybridSystem {
   StateLayout layout_;
   std::unique_ptr<FrictionModel> seal_;
   std::unique_ptr<FrictionModel> guide_;
+  std::optional<Orifice> valve1_;  // supply -> chamber 1 (S1)
+  std::optional<Orifice> valve2_;  // chamber 2 -> atmosphere (S2)
   double A1_ = 0.0;
   double A2_ = 0.0;
   double piston_mass_ = 0.0;

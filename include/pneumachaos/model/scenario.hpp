@@ -31,14 +31,14 @@ struct CircuitParams {
 };
 
 struct LoadParams {
-  double mass_kg = 1.5;            ///< total moving mass m (rigid) / load mass (spring)
-  double external_force_N = 0.0;   ///< constant force opposing extension
+  double mass_kg = 1.5;           ///< total moving mass m (rigid) / load mass (spring)
+  double external_force_N = 0.0;  ///< constant force opposing extension
   LoadCoupling coupling = LoadCoupling::kRigid;
-  double piston_mass_kg = 0.5;     ///< piston + rod, spring coupling only
+  double piston_mass_kg = 0.5;  ///< piston + rod, spring coupling only
   double coupling_stiffness_N_per_m = 8.0e3;
   double coupling_damping_Ns_per_m = 7.0;
-  FrictionParams guide_friction{FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0,
-                                1.0e5, 50.0, 0.0, 0.0};
+  FrictionParams guide_friction{
+      FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0, 1.0e5, 50.0, 0.0, 0.0};
 };
 
 struct RunParams {
@@ -52,10 +52,10 @@ struct RunParams {
 
 struct Scenario {
   GasConstants gas;
-  double polytropic_exponent = 1.4;   ///< k of eqs. (2)-(3): 1.4 adiabatic, 1.0 isothermal
-  double temperature_K = 293.15;      ///< chambers and supply
+  double polytropic_exponent = 1.4;  ///< k of eqs. (2)-(3): 1.4 adiabatic, 1.0 isothermal
+  double temperature_K = 293.15;     ///< chambers and supply
   double ambient_pressure_Pa = 101325.0;
-  double supply_gauge_Pa = 0.25e6;    ///< Ps above ambient (key supply.pressure_MPa)
+  double supply_gauge_Pa = 0.25e6;  ///< Ps above ambient (key supply.pressure_MPa)
   CylinderGeometry cylinder;
   CircuitParams circuit;
   ValveLaw valve;

@@ -11,11 +11,11 @@ namespace pneumachaos {
 struct StateLayout {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-  std::size_t x = 0;   ///< piston position [m]
-  std::size_t v = 1;   ///< piston velocity [m/s]
-  std::size_t P1 = 2;  ///< head-side pressure [Pa abs]
-  std::size_t P2 = 3;  ///< rod-side pressure [Pa abs]
-  std::size_t seal_z = kNone;   ///< first internal state of the seal friction model
+  std::size_t x = 0;           ///< piston position [m]
+  std::size_t v = 1;           ///< piston velocity [m/s]
+  std::size_t P1 = 2;          ///< head-side pressure [Pa abs]
+  std::size_t P2 = 3;          ///< rod-side pressure [Pa abs]
+  std::size_t seal_z = kNone;  ///< first internal state of the seal friction model
   std::size_t seal_z_count = 0;
   std::size_t load_x = kNone;   ///< load position [m] (spring coupling only)
   std::size_t load_v = kNone;   ///< load velocity [m/s]

@@ -11,8 +11,8 @@ enum class FlowLaw {
 
 /// Gas constants used by the flow law.
 struct GasConstants {
-  double R_J_per_kgK = 287.0;         ///< specific gas constant of air
-  double heat_capacity_ratio = 1.4;   ///< cp/cv of the flowing gas (used in the nozzle law)
+  double R_J_per_kgK = 287.0;        ///< specific gas constant of air
+  double heat_capacity_ratio = 1.4;  ///< cp/cv of the flowing gas (used in the nozzle law)
 };
 
 struct ValveLaw {
@@ -32,6 +32,26 @@ double choked_flux_factor(const GasConstants& gas, double T_up_K);
 /// two nodes; the upstream one is used.
 double valve_mass_flow(const ValveLaw& valve, const GasConstants& gas, double S_m2, double P_a_Pa,
                        double T_a_K, double P_b_Pa, double T_b_K);
+
+/// A restriction of fixed area, law and upstream temperatures, with the law's constants
+/// computed once (the flow law runs in the innermost loop of every simulation).
+class Orifice {
+ public:
+  Orifice(const ValveLaw& valve, const GasConstants& gas, double S_m2, double T_K);
+  /// Mass flow [kg/s] from pressure P_a to P_b; negative for reverse flow.
+  [[nodiscard]] double mass_flow(double P_a_Pa, double P_b_Pa) const;
+  /// psi(r) for 0 <= r <= 1, laminar branch included.
+  [[nodiscard]] double psi(double r) const;
+
+ private:
+  [[nodiscard]] double raw_psi(double r) const;
+  ValveLaw valve_;
+  double k_;
+  double coefficient_;  // S * choked_flux_factor
+  double r_crit_;       // b (ISO 6358) or the isentropic critical ratio
+  double inv_flux_crit_ = 1.0;
+  double psi_lam_ = 0.0;
+};
 
 /// Dimensionless flow function psi(r) of the law in forward direction (P_up >= P_down),
 /// with the laminar branch applied: W = S * P_up * choked_flux_factor * psi(r).

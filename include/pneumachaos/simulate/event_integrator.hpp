@@ -25,6 +25,7 @@ struct IntegratorOptions {
   /// Events allowed at one instant before the run is called chattering (Zeno).
   std::size_t max_events_at_one_instant = 64;
   std::size_t max_steps = 20'000'000;
+  bool record_events = true;  ///< keep the time and kind of each event in the summary
 
   /// Throws Error naming the offending option.
   void validate() const;
@@ -42,6 +43,11 @@ struct EventCounts {
   std::size_t stick = 0, slip = 0, reversal = 0, stop_hit = 0, stop_release = 0;
 };
 
+struct EventRecord {
+  double t_s = 0.0;
+  EventKind kind = EventKind::kSlip;
+};
+
 /// What happened in a run (ARCHITECTURE.md habit 3: options in, summary out).
 struct IntegrationSummary {
   Termination termination = Termination::kDurationReached;
@@ -51,6 +57,7 @@ struct IntegrationSummary {
   std::size_t steps_rejected = 0;
   std::size_t rhs_evaluations = 0;
   EventCounts events;
+  std::vector<EventRecord> event_log;  ///< every event in time order (when recorded)
   double wall_time_s = 0.0;
   [[nodiscard]] bool ok() const {
     return termination == Termination::kDurationReached ||
@@ -59,8 +66,7 @@ struct IntegrationSummary {
 };
 
 /// Receives each sample: time, state, mode.
-using SampleObserver =
-    std::function<void(double t, std::span<const double> x, const Mode& mode)>;
+using SampleObserver = std::function<void(double t, std::span<const double> x, const Mode& mode)>;
 
 /// Integrates `system` from (x, mode) at options.t_start_s to options.t_end_s or a terminal
 /// event. On return x and mode hold the final state. Never throws for numerical trouble: a

@@ -1,0 +1,199 @@
+// The cylinder model against conservation laws and closed-form answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pneumachaos/model/plant.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
+
+namespace pneumachaos {
+namespace {
+
+Scenario frictionless_closed(double k) {
+  Scenario s = default_scenario();
+  s.circuit.S1_m2 = 0.0;  // both valves shut: two closed chambers, a gas spring
+  s.circuit.S2_m2 = 0.0;
+  s.friction.kind = FrictionKind::kClassic;
+  s.friction.coulomb_N = s.friction.static_N = s.friction.viscous_Ns_per_m = 0.0;
+  s.polytropic_exponent = k;
+  return s;
+}
+
+SimulationOptions tight(double duration) {
+  SimulationOptions o;
+  o.duration_s = duration;
+  o.relative_tolerance = 1e-10;
+  o.absolute_tolerance = 1e-12;
+  return o;
+}
+
+class ClosedChamberTest : public ::testing::TestWithParam<double> {};
+
+TEST_P(ClosedChamberTest, KeepsPVkConstant) {
+  const double k = GetParam();
+  const Plant plant(frictionless_closed(k));
+  const auto& geo = plant.scenario().cylinder;
+  std::vector<double> x0 = plant.initial_state();
+  x0[plant.layout().x] = 0.2;
+  x0[plant.layout().P1] = 3.0e5;
+  x0[plant.layout().P2] = 1.5e5;
+  const auto r = simulate_from(plant, x0, tight(1.0));
+  ASSERT_TRUE(r.summary.ok()) << r.summary.message;
+  const auto& x = r.series.channel("x").values;
+  const auto& P1 = r.series.channel("P1").values;
+  const auto& P2 = r.series.channel("P2").values;
+  const double c1 = P1[0] * std::pow(geo.volume_head_m3(x[0]), k);
+  const double c2 = P2[0] * std::pow(geo.volume_rod_m3(x[0]), k);
+  double x_min = x[0], x_max = x[0];
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    // Relative drift bounded by the integration tolerance times the number of steps.
+    EXPECT_NEAR(P1[i] * std::pow(geo.volume_head_m3(x[i]), k) / c1, 1.0, 1e-7);
+    EXPECT_NEAR(P2[i] * std::pow(geo.volume_rod_m3(x[i]), k) / c2, 1.0, 1e-7);
+    x_min = std::min(x_min, x[i]);
+    x_max = std::max(x_max, x[i]);
+  }
+  EXPECT_GT(x_max - x_min, 0.01);            // the piston really moved
+  EXPECT_GE(r.summary.events.reversal, 2u);  // and turned round (zero-friction reversal)
+}
+
+INSTANTIATE_TEST_SUITE_P(AdiabaticAndIsothermal, ClosedChamberTest, ::testing::Values(1.4, 1.0));
+
+TEST(Plant, AdiabaticGasSpringConservesEnergy) {
+  // E = m v^2/2 + (P1 V1 + P2 V2)/(k-1) + Pa (A1 - A2) x is a first integral when both valves
+  // are shut and friction is zero (work of the gas on the piston against the atmosphere).
+  const Plant plant(frictionless_closed(1.4));
+  const auto& s = plant.scenario();
+  std::vector<double> x0 = plant.initial_state();
+  x0[plant.layout().x] = 0.2;
+  x0[plant.layout().P1] = 3.0e5;
+  x0[plant.layout().P2] = 1.5e5;
+  const auto r = simulate_from(plant, x0, tight(1.0));
+  const auto energy = [&](std::size_t i) {
+    const double x = r.series.channel("x").values[i];
+    const double v = r.series.channel("v").values[i];
+    return 0.5 * s.load.mass_kg * v * v +
+           (r.series.channel("P1").values[i] * s.cylinder.volume_head_m3(x) +
+            r.series.channel("P2").values[i] * s.cylinder.volume_rod_m3(x)) /
+               0.4 +
+           s.ambient_pressure_Pa * (plant.A1() - plant.A2()) * x;
+  };
+  const double e0 = energy(0);
+  for (std::size_t i = 0; i < r.series.size(); i += 10) EXPECT_NEAR(energy(i) / e0, 1.0, 1e-8);
+}
+
+TEST(Plant, SteadyMeterOutSpeedMatchesChokedFlowBalance) {
+  // Choked exhaust, isothermal exhaust temperature: W2 = S2 C P2 and W2 = P2 A2 v/(R T) give
+  // v = S2 C R T / A2 independent of P2 (C = choked_flux_factor; about 199 m/s * S2/A2).
+  Scenario s = default_scenario();
+  s.friction.kind = FrictionKind::kClassic;
+  const Plant plant(s);
+  const double v_expected = s.circuit.S2() * choked_flux_factor(s.gas, s.temperature_K) *
+                            s.gas.R_J_per_kgK * s.temperature_K / plant.A2();
+  EXPECT_NEAR(v_expected, 198.6 * s.circuit.S2() / plant.A2(), 1e-3 * v_expected);
+  const auto r = simulate(plant, tight(4.0));
+  ASSERT_TRUE(r.summary.ok()) << r.summary.message;
+  const std::size_t i = r.series.size() - 1;
+  const double v = r.series.channel("v").values[i];
+  const double P1 = r.series.channel("P1").values[i];
+  const double P2 = r.series.channel("P2").values[i];
+  ASSERT_GT(P2 * s.valve.critical_ratio, s.ambient_pressure_Pa);  // exhaust is choked
+  // Settled to far better than the 1 % the issue asks; 1e-4 leaves room for the last decay.
+  EXPECT_NEAR(v / v_expected, 1.0, 1e-4);
+  const double Pa = s.ambient_pressure_Pa;
+  const double friction = s.friction.coulomb_N + s.friction.viscous_Ns_per_m * v;
+  EXPECT_NEAR(plant.A1() * (P1 - Pa) - plant.A2() * (P2 - Pa), friction, 1e-3);
+}
+
+TEST(Plant, TrueStictionHoldsPositionWhilePressuresEvolve) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip
+  const Plant plant(s);
+  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  ASSERT_TRUE(r.summary.ok()) << r.summary.message;
+  EXPECT_GE(r.summary.events.stick, 3u);
+  EXPECT_GE(r.summary.events.slip, 3u);
+  const auto& x = r.series.channel("x").values;
+  const auto& v = r.series.channel("v").values;
+  const auto& P2 = r.series.channel("P2").values;
+  const auto& F = r.series.channel("F_friction").values;
+  const auto& stuck = r.series.channel("stuck").values;
+  std::size_t stuck_samples = 0;
+  double largest_P2_change = 0.0;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (stuck[i] == 1.0 && stuck[i - 1] == 1.0 && x[i] > 0.0) {
+      ++stuck_samples;
+      EXPECT_EQ(v[i], 0.0);
+      EXPECT_EQ(x[i], x[i - 1]);
+      EXPECT_LE(std::abs(F[i]), s.friction.static_N + 1e-9);
+      largest_P2_change = std::max(largest_P2_change, std::abs(P2[i] - P2[i - 1]));
+    }
+  }
+  EXPECT_GT(stuck_samples, 100u);
+  EXPECT_GT(largest_P2_change, 1.0);  // Pa per millisecond: the chamber keeps exhausting
+}
+
+TEST(Plant, BreaksAwayFromTheStopWhenDriveExceedsStaticFriction) {
+  const Scenario s = default_scenario();
+  const Plant plant(s);
+  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  ASSERT_FALSE(r.summary.event_log.empty());
+  EXPECT_EQ(r.summary.event_log.front().kind, EventKind::kStopRelease);
+  const double t_release = r.summary.event_log.front().t_s;
+  const std::size_t k = static_cast<std::size_t>(std::floor(t_release * 1000.0));
+  const double Pa = s.ambient_pressure_Pa;
+  const double drive = plant.A1() * (r.series.channel("P1").values[k] - Pa) -
+                       plant.A2() * (r.series.channel("P2").values[k] - Pa);
+  EXPECT_LE(drive, s.friction.static_N);  // the last sample before release is still held
+  for (std::size_t i = 0; i <= k; ++i) EXPECT_EQ(r.series.channel("x").values[i], 0.0);
+}
+
+TEST(Plant, RunEndsAtTheEndOfStroke) {
+  Scenario s = default_scenario();
+  s.cylinder.stroke_m = 0.1;
+  const Plant plant(s);
+  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  EXPECT_EQ(r.summary.termination, Termination::kTerminalEvent);
+  for (double x : r.series.channel("x").values) EXPECT_LE(x, 0.1);
+  EXPECT_LT(r.summary.t_final_s, s.run.duration_s);
+}
+
+TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
+  Scenario s = default_scenario();
+  s.friction.kind = FrictionKind::kLuGre;
+  s.run.duration_s = 3.0;
+  const Plant plant(s);
+  auto o = SimulationOptions::from(s.run);
+  const auto a = simulate(plant, o);
+  o.stepper = StepperKind::kRosenbrock4;
+  const auto b = simulate(plant, o);
+  ASSERT_TRUE(a.summary.ok() && b.summary.ok());
+  ASSERT_EQ(a.series.size(), b.series.size());
+  const auto& va = a.series.channel("v").values;
+  const auto& vb = b.series.channel("v").values;
+  for (std::size_t i = 0; i < va.size(); ++i) EXPECT_NEAR(va[i], vb[i], 1e-6);
+}
+
+TEST(Plant, StiffSpringCouplingMovesLikeOneRigidMass) {
+  // A very stiff, damped coupling with a frictionless guide must reproduce the rigid model's
+  // steady speed: the load and the piston then share the choked meter-out velocity.
+  Scenario s = default_scenario();
+  s.friction.kind = FrictionKind::kClassic;
+  s.load.coupling = LoadCoupling::kSpring;
+  s.load.piston_mass_kg = 0.5;
+  s.load.mass_kg = 1.0;
+  s.load.coupling_stiffness_N_per_m = 1e6;
+  s.load.coupling_damping_Ns_per_m = 2000.0;
+  s.load.guide_friction.kind = FrictionKind::kClassic;
+  s.load.guide_friction.coulomb_N = s.load.guide_friction.static_N = 0.0;
+  s.load.guide_friction.viscous_Ns_per_m = 0.0;
+  const Plant plant(s);
+  const auto r = simulate(plant, tight(3.0));
+  ASSERT_TRUE(r.summary.ok()) << r.summary.message;
+  const double v_expected = s.circuit.S2() * choked_flux_factor(s.gas, s.temperature_K) *
+                            s.gas.R_J_per_kgK * s.temperature_K / plant.A2();
+  EXPECT_NEAR(r.series.channel("v_load").values.back() / v_expected, 1.0, 1e-4);
+  EXPECT_NEAR(r.series.channel("v").values.back() / v_expected, 1.0, 1e-4);
+}
+
+}  // namespace
+}  // namespace pneumachaos
