@@ -36,9 +36,8 @@ void FrictionModel::steady_state(const FrictionInput& /*in*/, std::span<double> 
 std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params) {
   switch (params.kind) {
     case FrictionKind::kClassic:
-      return std::make_unique<ClassicFriction>(params);
     case FrictionKind::kStribeck:
-      return std::make_unique<StribeckFriction>(params);
+      return std::make_unique<StictionFriction>(params);
     case FrictionKind::kLuGre:
       return std::make_unique<LuGreFriction>(params);
   }

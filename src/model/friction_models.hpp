@@ -5,8 +5,9 @@
 
 namespace pneumachaos {
 
-/// Paper eq. (4): Fs at rest, Fc sgn v + B v while sliding; true stiction.
-class ClassicFriction final : public FrictionModel {
+/// True stiction: v = 0 held while |drive| <= Fs. Sliding force: `classic`, paper eq. (4),
+/// Fc sgn v + B v; `stribeck`, [Fc + (Fs - Fc) exp(-(|v|/vs)^delta)] sgn v + B v.
+class StictionFriction final : public FrictionModel {
  public:
   using FrictionModel::FrictionModel;
   [[nodiscard]] bool has_stiction() const override { return true; }
@@ -15,18 +16,9 @@ class ClassicFriction final : public FrictionModel {
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
                                        std::span<const double> z) const override;
   [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
-};
 
-/// [Fc + (Fs - Fc) exp(-(|v|/vs)^delta)] sgn v + B v, with the same stiction handling.
-class StribeckFriction final : public FrictionModel {
- public:
-  using FrictionModel::FrictionModel;
-  [[nodiscard]] bool has_stiction() const override { return true; }
-  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
-                 std::span<double> dz) const override;
-  [[nodiscard]] double holding_force_N(const FrictionInput& in,
-                                       std::span<const double> z) const override;
-  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+ private:
+  [[nodiscard]] double sliding_level_N(const FrictionInput& in, double speed) const;
 };
 
 /// Canudas de Wit, Olsson, Astrom & Lischinsky (1995), IEEE TAC 40(3): bristle model
