@@ -12,6 +12,7 @@ using Action = std::function<int()>;
 
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);
+Action add_stability(CLI::App& app);
 
 /// Exit codes shared by all commands.
 inline constexpr int kExitOk = 0;

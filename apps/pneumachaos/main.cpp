@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   };
   add(pneumachaos::cli::add_simulate);
   add(pneumachaos::cli::add_scenario);
+  add(pneumachaos::cli::add_stability);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

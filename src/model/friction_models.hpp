@@ -16,6 +16,8 @@ class StictionFriction final : public FrictionModel {
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
                                        std::span<const double> z) const override;
   [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  [[nodiscard]] FrictionPartials partials(const FrictionInput& in, int direction,
+                                          std::span<const double> z) const override;
 
  private:
   [[nodiscard]] double sliding_level_N(const FrictionInput& in, double speed) const;
@@ -33,6 +35,8 @@ class LuGreFriction final : public FrictionModel {
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
                                        std::span<const double> z) const override;
   [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  [[nodiscard]] FrictionPartials partials(const FrictionInput& in, int direction,
+                                          std::span<const double> z) const override;
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 

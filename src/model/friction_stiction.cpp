@@ -27,4 +27,15 @@ double StictionFriction::steady_force_N(const FrictionInput& in) const {
   return sgn * sliding_level_N(in, v) + p_.viscous_Ns_per_m * v;
 }
 
+FrictionPartials StictionFriction::partials(const FrictionInput& in, int direction,
+                                            std::span<const double> /*z*/) const {
+  // F = d * level(d v, p) + B v with d = direction, so dF/dv = level' + B.
+  const double speed = std::max(direction * in.v_m_per_s, 0.0);
+  FrictionPartials d;
+  const bool classic = p_.kind == FrictionKind::kClassic;
+  d.dF_dv = (classic ? 0.0 : stribeck_dspeed(in, speed)) + p_.viscous_Ns_per_m;
+  d.dF_dp = direction * (classic ? p_.coulomb_gain_N_per_Pa : stribeck_dp(speed));
+  return d;
+}
+
 }  // namespace pneumachaos

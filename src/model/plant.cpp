@@ -239,6 +239,17 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
   return out;
 }
 
+Mode Plant::sliding_mode(int direction) const {
+  Mode mode;
+  const auto slide = [&](const FrictionModel& f) {
+    if (!f.has_stiction()) return ContactMode::kSmooth;
+    return direction > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg;
+  };
+  set_mode(mode, kSeal, slide(*seal_));
+  if (contacts_ == 2) set_mode(mode, kGuide, slide(*guide_));
+  return mode;
+}
+
 Mode Plant::initial_mode(std::span<const double> x, double /*t*/) const {
   Mode mode;
   const auto& L = layout_;

@@ -32,6 +32,13 @@ struct FrictionInput {
   double position_m = 0.0;    ///< position along the contact (for textures)
 };
 
+/// First derivatives of a friction model while sliding, for the linearization. p is the
+/// gauge pressure sum P1 + P2 - 2 Pa; z the (at most one) internal state.
+struct FrictionPartials {
+  double dF_dv = 0.0, dF_dp = 0.0, dF_dz = 0.0;
+  double dzdot_dv = 0.0, dzdot_dp = 0.0, dzdot_dz = 0.0;
+};
+
 class FrictionModel {
  public:
   explicit FrictionModel(const FrictionParams& p) : p_(p) {}
@@ -59,6 +66,10 @@ class FrictionModel {
   /// Slope dF/dv of the steady curve at v (the paper's B, negative on a Stribeck drop).
   [[nodiscard]] double steady_slope_Ns_per_m(const FrictionInput& in) const;
 
+  /// Analytic partial derivatives while sliding (direction as in force_N).
+  [[nodiscard]] virtual FrictionPartials partials(const FrictionInput& in, int direction,
+                                                  std::span<const double> z) const = 0;
+
   /// Steady internal state at constant velocity (zero for models without state).
   virtual void steady_state(const FrictionInput& in, std::span<double> z) const;
 
@@ -73,6 +84,11 @@ class FrictionModel {
   }
   /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
   [[nodiscard]] double stribeck_level_N(const FrictionInput& in, double speed) const;
+  /// dg/d|v| and dg/dp of the Stribeck curve at |v| = speed.
+  [[nodiscard]] double stribeck_dspeed(const FrictionInput& in, double speed) const;
+  [[nodiscard]] double stribeck_dp(double speed) const;
+  /// exp(-(speed/vs)^delta), the Stribeck drop's weight.
+  [[nodiscard]] double stribeck_weight(double speed) const;
 
   FrictionParams p_;
 };

@@ -56,6 +56,12 @@ class Plant final : public HybridSystem {
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
   [[nodiscard]] const Scenario& scenario() const { return scenario_; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
+  /// The load guide's friction model; nullptr for rigid coupling.
+  [[nodiscard]] const FrictionModel* guide_friction() const { return guide_.get(); }
+  [[nodiscard]] const Orifice& valve1() const { return *valve1_; }  ///< supply -> chamber 1
+  [[nodiscard]] const Orifice& valve2() const { return *valve2_; }  ///< chamber 2 -> atmosphere
+  /// The mode in which every contact slides in `direction` (+1/-1): steady motion.
+  [[nodiscard]] Mode sliding_mode(int direction) const;
   [[nodiscard]] double A1() const { return A1_; }
   [[nodiscard]] double A2() const { return A2_; }
   /// Mass whose motion carries the seal friction: total mass (rigid) or piston + rod (spring).

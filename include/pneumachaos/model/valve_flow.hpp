@@ -42,6 +42,17 @@ class Orifice {
   [[nodiscard]] double mass_flow(double P_a_Pa, double P_b_Pa) const;
   /// psi(r) for 0 <= r <= 1, laminar branch included.
   [[nodiscard]] double psi(double r) const;
+  /// d psi / d r, analytic (used by the linearization).
+  [[nodiscard]] double dpsi_dr(double r) const;
+
+  struct Partials {
+    double W = 0.0;       ///< mass flow from a to b [kg/s]
+    double dW_dPa = 0.0;  ///< [kg/(s*Pa)]
+    double dW_dPb = 0.0;
+  };
+  [[nodiscard]] Partials mass_flow_partials(double P_a_Pa, double P_b_Pa) const;
+  /// S * choked flux factor: the paper's Cd [kg/(s*Pa)], W_choked = Cd * P_up.
+  [[nodiscard]] double choked_coefficient() const { return coefficient_; }
 
  private:
   [[nodiscard]] double raw_psi(double r) const;

@@ -1,0 +1,68 @@
+// `pneumachaos stability`: the linear analysis at one point, or its map over a grid.
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/io/stability_output.hpp"
+
+namespace pneumachaos::cli {
+
+Action add_stability(CLI::App& app) {
+  struct Args {
+    std::string scenario;
+    std::vector<std::string> sets;
+    std::vector<std::string> grids;
+    bool json = false;
+    bool map = false;
+    double position_mm = -1.0;
+    std::string output;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "stability",
+      "Linear stability of the steady motion: the paper's a1/b1 and damping coefficient beside "
+      "the full model's eigenvalues; --map evaluates it over a grid");
+  cmd->add_option("scenario", args->scenario, "scenario TOML file (default: built-in scenario)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--set", args->sets, "override a scenario key, e.g. --set circuit.S2_mm2=0.2");
+  cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
+  cmd->add_option("--position-mm", args->position_mm,
+                  "piston position for the chamber volumes [mm] (default: mid-stroke)");
+  cmd->add_flag("--map", args->map, "evaluate over a grid (default: the paper's S1 x S2 grid)");
+  cmd->add_option("--grid", args->grids,
+                  "grid axis KEY=FROM:TO:STEP in the key's unit (with --map; repeatable)");
+  cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)");
+  return [args]() {
+    const Scenario scenario = build_scenario(args->scenario, args->sets);
+    StabilityOptions options;
+    if (args->position_mm >= 0.0) options.equilibrium.position_m = args->position_mm * 1e-3;
+    if (!args->map) {
+      if (!args->grids.empty()) throw Error("--grid", "needs --map");
+      const Plant plant(scenario);
+      const StabilityResult r = analyze_stability(plant, options);
+      fmt::print("{}", args->json ? stability_json(plant, r) + "\n" : stability_table(plant, r));
+      return kExitOk;
+    }
+    std::vector<GridAxis> axes;
+    for (const auto& g : args->grids) axes.push_back(parse_grid_axis(g));
+    if (axes.empty()) axes = paper_valve_grid();
+    const StabilityMap map = stability_map(scenario, axes, options);
+    fmt::print(stderr, "stability map: {} points, {} with steady motion, verdicts agree at {}\n",
+               map.points.size(), map.with_equilibrium, map.agreeing);
+    if (args->output.empty()) {
+      write_stability_map_csv(std::cout, map, scenario.ambient_pressure_Pa);
+      return kExitOk;
+    }
+    AtomicFile file(args->output);
+    write_stability_map_csv(file.stream(), map, scenario.ambient_pressure_Pa);
+    file.commit();
+    return kExitOk;
+  };
+}
+
+}  // namespace pneumachaos::cli
