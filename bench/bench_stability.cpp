@@ -16,9 +16,8 @@ void BM_PaperGridMap(benchmark::State& state) {
     const StabilityMap map = stability_map(s, axes);
     benchmark::DoNotOptimize(map.agreeing);
   }
-  state.counters["points_per_s"] =
-      benchmark::Counter(static_cast<double>(grid_size(axes)) * state.iterations(),
-                         benchmark::Counter::kIsRate);
+  state.counters["points_per_s"] = benchmark::Counter(
+      static_cast<double>(grid_size(axes)) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 void BM_SinglePoint(benchmark::State& state) {

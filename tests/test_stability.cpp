@@ -92,8 +92,7 @@ INSTANTIATE_TEST_SUITE_P(
                                                "friction.Fs_gain_N_per_MPa=12"},
                       std::vector<std::string>{"circuit.kind=meter-in", "valve.law=isentropic"},
                       std::vector<std::string>{"load.coupling=spring", "friction.model=lugre",
-                                               "guide_friction.model=lugre",
-                                               "load.force_N=5"}));
+                                               "guide_friction.model=lugre", "load.force_N=5"}));
 
 TEST(Stability, ClassicFrictionIsDampedByBothAnalyses) {
   const Plant plant(scenario({"friction.model=classic"}));
@@ -162,11 +161,13 @@ Measured simulate_mode(const Plant& plant, const Equilibrium& e, std::complex<do
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(J);
   Eigen::Index best = 0;
   for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i) {
-    if (std::abs(solver.eigenvalues()[i] - lambda) < std::abs(solver.eigenvalues()[best] - lambda)) best = i;
+    if (std::abs(solver.eigenvalues()[i] - lambda) < std::abs(solver.eigenvalues()[best] - lambda))
+      best = i;
   }
   Eigen::VectorXd direction = solver.eigenvectors().col(best).real();
   if (std::abs(direction[0]) < 1e-12) direction = solver.eigenvectors().col(best).imag();
-  const Eigen::VectorXd y = reduced_state(plant, e).value + direction * (dv_amplitude / direction[0]);
+  const Eigen::VectorXd y =
+      reduced_state(plant, e).value + direction * (dv_amplitude / direction[0]);
   SimulationOptions o;
   o.duration_s = duration_s;
   o.sample_rate_Hz = 10000.0;

@@ -21,9 +21,10 @@ const char* circuit_name(const Scenario& s) {
 std::string stability_table(const Plant& plant, const StabilityResult& r) {
   const Scenario& s = plant.scenario();
   const double Pa = s.ambient_pressure_Pa;
-  std::string out = fmt::format("circuit {}, S1 = {:.3g} mm^2, S2 = {:.3g} mm^2, Ps = {:.3g} MPa gauge, m = {:.3g} kg\n",
-                                circuit_name(s), s.circuit.S1() * 1e6, s.circuit.S2() * 1e6,
-                                s.supply_gauge_Pa * 1e-6, s.load.mass_kg);
+  std::string out = fmt::format(
+      "circuit {}, S1 = {:.3g} mm^2, S2 = {:.3g} mm^2, Ps = {:.3g} MPa gauge, m = {:.3g} kg\n",
+      circuit_name(s), s.circuit.S1() * 1e6, s.circuit.S2() * 1e6, s.supply_gauge_Pa * 1e-6,
+      s.load.mass_kg);
   if (!r.has_equilibrium()) return out + "no steady motion: " + r.reason + "\n";
   const Equilibrium& e = r.equilibrium;
   const bool meter_out = s.circuit.kind == CircuitKind::kMeterOut;
@@ -32,10 +33,11 @@ std::string stability_table(const Plant& plant, const StabilityResult& r) {
       "friction {:.3f} N, slope B = {:.4g} N*s/m\n",
       e.position_m * 1e3, e.v0_m_per_s * 1e3, (e.P10_Pa - Pa) * 1e-6, (e.P20_Pa - Pa) * 1e-6,
       e.friction_N, e.slope_Ns_per_m);
-  out += fmt::format("paper ({}): {} = {:.4g} N*s/m, {} = {:.4g} N/m, zeta = {:.4g} -> {}\n",
-                     meter_out ? "eqs. 6-9" : "eqs. 10-11", meter_out ? "a1" : "b1",
-                     meter_out ? r.paper.a1 : r.paper.b1, meter_out ? "a2" : "b2",
-                     meter_out ? r.paper.a2 : r.paper.b2, r.paper.zeta, verdict_name(r.paper.verdict));
+  out +=
+      fmt::format("paper ({}): {} = {:.4g} N*s/m, {} = {:.4g} N/m, zeta = {:.4g} -> {}\n",
+                  meter_out ? "eqs. 6-9" : "eqs. 10-11", meter_out ? "a1" : "b1",
+                  meter_out ? r.paper.a1 : r.paper.b1, meter_out ? "a2" : "b2",
+                  meter_out ? r.paper.a2 : r.paper.b2, r.paper.zeta, verdict_name(r.paper.verdict));
   out += fmt::format("full model ({} states: ", r.state_names.size());
   for (std::size_t i = 0; i < r.state_names.size(); ++i) out += (i ? ", " : "") + r.state_names[i];
   out += "): eigenvalues [1/s]\n";
@@ -109,16 +111,17 @@ void write_stability_map_csv(std::ostream& out, const StabilityMap& map, double 
     if (!r.has_equilibrium()) {
       std::string why = p.error.empty() ? r.reason : p.error;
       for (char& c : why) c = (c == ',' || c == '"') ? ';' : c;
-      out << ",,,,,,,," << ",,,no-equilibrium,," << '"' << why << '"' << '\n';
+      out << ",,,,,,,,"
+          << ",,,no-equilibrium,," << '"' << why << '"' << '\n';
       continue;
     }
     const Equilibrium& e = r.equilibrium;
-    out << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g},{:.6g},{},{},\n",
-                       e.v0_m_per_s * 1e3, (e.P10_Pa - ambient_Pa) * 1e-6,
-                       (e.P20_Pa - ambient_Pa) * 1e-6, e.slope_Ns_per_m, r.paper.a1, r.paper.b1,
-                       r.paper.zeta, verdict_name(r.paper.verdict), r.max_real_part_per_s,
-                       r.oscillatory_frequency_Hz, r.oscillatory_damping_ratio,
-                       verdict_name(r.verdict_full), r.agree() ? 1 : 0);
+    out << fmt::format(
+        "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g},{:.6g},{},{},\n",
+        e.v0_m_per_s * 1e3, (e.P10_Pa - ambient_Pa) * 1e-6, (e.P20_Pa - ambient_Pa) * 1e-6,
+        e.slope_Ns_per_m, r.paper.a1, r.paper.b1, r.paper.zeta, verdict_name(r.paper.verdict),
+        r.max_real_part_per_s, r.oscillatory_frequency_Hz, r.oscillatory_damping_ratio,
+        verdict_name(r.verdict_full), r.agree() ? 1 : 0);
   }
 }
 

@@ -64,7 +64,8 @@ void validate_grid(const std::vector<GridAxis>& axes) {
   for (std::size_t i = 0; i < axes.size(); ++i) {
     if (axes[i].values.empty()) throw Error("--grid " + axes[i].key, "the axis has no values");
     for (std::size_t j = 0; j < i; ++j) {
-      if (axes[i].key == axes[j].key) throw Error("--grid " + axes[i].key, "the key is gridded twice");
+      if (axes[i].key == axes[j].key)
+        throw Error("--grid " + axes[i].key, "the key is gridded twice");
     }
   }
 }

@@ -14,8 +14,8 @@ namespace {
 
 double root(const std::function<double(double)>& f, double lo, double hi) {
   std::uintmax_t iterations = 100;
-  const auto r = boost::math::tools::toms748_solve(f, lo, hi, boost::math::tools::eps_tolerance<double>(48),
-                                                   iterations);
+  const auto r = boost::math::tools::toms748_solve(
+      f, lo, hi, boost::math::tools::eps_tolerance<double>(48), iterations);
   return 0.5 * (r.first + r.second);
 }
 
@@ -91,8 +91,7 @@ EquilibriumResult find_equilibria(const Plant& plant, const EquilibriumOptions& 
     const double dP = lo * std::pow(dP_max / lo, static_cast<double>(i) / n);
     const double f = residual(Pa + dP);
     if ((f_prev > 0.0) != (f > 0.0)) {
-      const double P2 =
-          root([&](double P) { return residual(P); }, Pa + dP_prev, Pa + dP);
+      const double P2 = root([&](double P) { return residual(P); }, Pa + dP_prev, Pa + dP);
       const Point p = point(P2);
       const SteadyFriction fr = steady_friction(plant, p.v, p.P1, p.P2);
       Equilibrium e{p.v, p.P1, p.P2, x0, fr.force_N, fr.slope_Ns_per_m, {}};
@@ -124,11 +123,11 @@ EquilibriumResult find_equilibria(const Plant& plant, const EquilibriumOptions& 
     f_prev = f;
   }
   if (result.equilibria.empty()) {
-    result.reason = f_first <= 0.0
-                        ? fmt::format("the drive cannot overcome friction and load: at creeping "
-                                      "speed the net force is {:.3g} N",
-                                      f_first)
-                        : "no rod-side pressure balances the forces";
+    result.reason = f_first <= 0.0 ? fmt::format(
+                                         "the drive cannot overcome friction and load: at creeping "
+                                         "speed the net force is {:.3g} N",
+                                         f_first)
+                                   : "no rod-side pressure balances the forces";
   }
   return result;
 }

@@ -70,7 +70,8 @@ ReducedState reduced_state(const Plant& plant, const Equilibrium& eq) {
     add("v_load", eq.state[L.load_v]);
   }
   if (r.z_guide != ReducedLayout::kNone) add("z_guide", eq.state[L.guide_z]);
-  out.value = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  out.value =
+      Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   return out;
 }
 

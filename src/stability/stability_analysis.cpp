@@ -11,9 +11,12 @@ namespace pneumachaos {
 
 const char* verdict_name(Verdict v) {
   switch (v) {
-    case Verdict::kDamped: return "damped";
-    case Verdict::kSelfExcited: return "self-excited";
-    case Verdict::kNoEquilibrium: return "no-equilibrium";
+    case Verdict::kDamped:
+      return "damped";
+    case Verdict::kSelfExcited:
+      return "self-excited";
+    case Verdict::kNoEquilibrium:
+      return "no-equilibrium";
   }
   return "?";
 }
@@ -22,8 +25,8 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) 
   const Scenario& s = plant.scenario();
   const double k = s.polytropic_exponent;
   const double RT = s.gas.R_J_per_kgK * s.temperature_K;
-  const double m = s.load.mass_kg +
-                   (s.load.coupling == LoadCoupling::kSpring ? s.load.piston_mass_kg : 0.0);
+  const double m =
+      s.load.mass_kg + (s.load.coupling == LoadCoupling::kSpring ? s.load.piston_mass_kg : 0.0);
   const double V10 = s.cylinder.volume_head_m3(eq.position_m);
   const double V20 = s.cylinder.volume_rod_m3(eq.position_m);
   const double B = eq.slope_Ns_per_m;

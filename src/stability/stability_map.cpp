@@ -14,7 +14,8 @@ StabilityMap stability_map(const Scenario& base, const std::vector<GridAxis>& ax
   for (std::size_t flat = 0; flat < n; ++flat) {
     const auto index = grid_index(axes, flat);
     StabilityMapPoint point;
-    for (std::size_t i = 0; i < axes.size(); ++i) point.coordinates.push_back(axes[i].values[index[i]]);
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      point.coordinates.push_back(axes[i].values[index[i]]);
     try {
       const Plant plant(scenario_at(base, axes, index));
       point.result = analyze_stability(plant, options);

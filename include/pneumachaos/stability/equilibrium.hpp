@@ -23,9 +23,9 @@ struct Equilibrium {
   double P10_Pa = 0.0;
   double P20_Pa = 0.0;
   double position_m = 0.0;
-  double friction_N = 0.0;         ///< seal (+ guide) friction at v0
-  double slope_Ns_per_m = 0.0;     ///< d(friction)/dv of the steady curves at v0: the paper's B
-  std::vector<double> state;       ///< full plant state at the equilibrium (x = position)
+  double friction_N = 0.0;      ///< seal (+ guide) friction at v0
+  double slope_Ns_per_m = 0.0;  ///< d(friction)/dv of the steady curves at v0: the paper's B
+  std::vector<double> state;    ///< full plant state at the equilibrium (x = position)
 };
 
 struct EquilibriumResult {

@@ -36,11 +36,11 @@ struct StabilityResult {
   std::string reason;                              ///< when there is no equilibrium
   Equilibrium equilibrium;
   PaperCoefficients paper;
-  std::vector<std::complex<double>> eigenvalues;   ///< [1/s], descending real part
-  std::vector<std::string> state_names;            ///< states of the linearization
+  std::vector<std::complex<double>> eigenvalues;  ///< [1/s], descending real part
+  std::vector<std::string> state_names;           ///< states of the linearization
   double max_real_part_per_s = 0.0;
-  double dominant_frequency_Hz = 0.0;  ///< of the eigenvalue with the largest real part
-  double dominant_damping_ratio = 0.0; ///< -Re/|lambda| of that eigenvalue
+  double dominant_frequency_Hz = 0.0;   ///< of the eigenvalue with the largest real part
+  double dominant_damping_ratio = 0.0;  ///< -Re/|lambda| of that eigenvalue
   /// The complex pair with the largest real part (the oscillation the paper's eq. 7
   /// describes); zero frequency when every eigenvalue is real.
   std::complex<double> oscillatory_pair{0.0, 0.0};

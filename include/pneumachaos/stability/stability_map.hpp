@@ -17,7 +17,7 @@ struct StabilityMapPoint {
 struct StabilityMap {
   std::vector<GridAxis> axes;
   std::vector<StabilityMapPoint> points;  ///< product grid, last axis fastest
-  std::size_t agreeing = 0;      ///< points with an equilibrium where both verdicts agree
+  std::size_t agreeing = 0;               ///< points with an equilibrium where both verdicts agree
   std::size_t with_equilibrium = 0;
 };
 
