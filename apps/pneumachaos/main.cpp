@@ -8,7 +8,9 @@
 #include "commands.hpp"
 #include "pneumachaos/core/error.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"pneumachaos: stick-slip and chaotic oscillation of pneumatic cylinders"};
   app.set_version_flag("--version", std::string("pneumachaos ") + PNEUMACHAOS_VERSION);
   app.require_subcommand(1);
@@ -25,14 +27,23 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  for (auto* sub : app.get_subcommands()) return actions.at(sub)();
+  return pneumachaos::cli::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Every failure ends here with a message and an exit code, never as an uncaught exception.
   try {
-    for (auto* sub : app.get_subcommands()) return actions.at(sub)();
+    return run(argc, argv);
   } catch (const pneumachaos::Error& e) {
     fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
     return pneumachaos::cli::kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "pneumachaos: internal error: {}\n", e.what());
     return 70;  // EX_SOFTWARE
+  } catch (...) {
+    return 70;
   }
-  return pneumachaos::cli::kExitOk;
 }
