@@ -30,8 +30,9 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
     } else if (const auto* s = node.as_string()) {
       apply_setting(scenario, key, s->get(), where);
     } else {
-      throw Error(fmt::format("{}: {}", where, key),
-                  "expected a number or a word; arrays, booleans and dates are not scenario values");
+      throw Error(
+          fmt::format("{}: {}", where, key),
+          "expected a number or a word; arrays, booleans and dates are not scenario values");
     }
   }
 }

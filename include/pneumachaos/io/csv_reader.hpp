@@ -1,0 +1,29 @@
+#pragma once
+// Reading one uniformly sampled channel from a CSV file with a header (measured or simulated).
+
+#include <optional>
+#include <string>
+
+#include "pneumachaos/core/time_series.hpp"
+
+namespace pneumachaos {
+
+struct CsvSeriesOptions {
+  std::string column = "v";  ///< header name, matched exactly or before a "[unit]" suffix
+  /// Sample rate [Hz]; when unset the file needs a time column (t, time, t[s], time_s).
+  std::optional<double> rate_Hz;
+  /// Largest allowed deviation of a time step from the median step, relative to it; A/D
+  /// timestamps jitter a little, a missing sample (a step of 2) is refused.
+  double time_jitter = 0.01;
+};
+
+/// Reads the column as a one-channel TimeSeries named after it. Throws Error naming the
+/// file, line and column for a missing column, a non-numeric or non-finite cell, a row with
+/// the wrong number of fields, non-increasing or non-uniform time, or fewer than 2 samples.
+TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options);
+
+/// The same from text already in memory; `origin` names it in errors.
+TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
+                            const CsvSeriesOptions& options);
+
+}  // namespace pneumachaos

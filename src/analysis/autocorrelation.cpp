@@ -1,0 +1,68 @@
+#include "pneumachaos/analysis/autocorrelation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "pneumachaos/analysis/fft.hpp"
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+
+Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::size_t max_lag) {
+  const std::size_t n = x.size();
+  if (n < 16) throw Error("autocorrelation", fmt::format("{} samples: at least 16 are needed", n));
+  if (max_lag == 0 || max_lag >= n) max_lag = n / 4;
+  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  std::vector<double> centred(n);
+  for (std::size_t i = 0; i < n; ++i) centred[i] = x[i] - mean;
+  // Zero padding to >= 2N makes the circular correlation equal the linear one.
+  auto X = forward_dft(centred, fast_fft_size(2 * n));
+  for (auto& c : X) c = std::norm(c);
+  const std::vector<double> raw = inverse_dft_real(X);
+  if (!(raw[0] > 0.0)) throw Error("autocorrelation", "the series is constant");
+  Autocorrelation a;
+  a.rate_Hz = rate_Hz;
+  a.r.resize(max_lag + 1);
+  for (std::size_t k = 0; k <= max_lag; ++k) a.r[k] = raw[k] / raw[0];
+
+  for (std::size_t k = 1; k <= max_lag; ++k) {
+    if (a.one_over_e_s < 0 && a.r[k] < std::exp(-1.0)) a.one_over_e_s = k / rate_Hz;
+    if (a.first_zero_s < 0 && a.r[k] <= 0.0) a.first_zero_s = k / rate_Hz;
+  }
+  // Envelope: local maxima of |r|.
+  std::vector<double> lag, env;
+  for (std::size_t k = 1; k + 1 <= max_lag; ++k) {
+    const double m = std::abs(a.r[k]);
+    if (m >= std::abs(a.r[k - 1]) && m > std::abs(a.r[k + 1])) {
+      lag.push_back(k / rate_Hz);
+      env.push_back(m);
+    }
+  }
+  const double noise = 2.0 / std::sqrt(static_cast<double>(n));
+  double st = 0, sl = 0, stt = 0, stl = 0, count = 0;
+  for (std::size_t i = 0; i < env.size() && env[i] > noise; ++i) {
+    const double l = std::log(env[i]);
+    st += lag[i];
+    sl += l;
+    stt += lag[i] * lag[i];
+    stl += lag[i] * l;
+    ++count;
+  }
+  if (count >= 3 && count * stt - st * st > 0) {
+    a.envelope_decay_per_s = std::max(0.0, -(count * stl - st * sl) / (count * stt - st * st));
+  }
+  double late = 0.0;
+  std::size_t late_count = 0;
+  for (std::size_t k = n / 8; k <= std::min(max_lag, n / 4); ++k) {
+    late += std::abs(a.r[k]);
+    ++late_count;
+  }
+  // The mean of |r| over a window is about 2/pi of its envelope for an oscillation.
+  a.late_envelope = late_count ? late / late_count * (std::numbers::pi / 2.0) : 0.0;
+  return a;
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,165 @@
+#include "pneumachaos/analysis/delay_embedding.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nanoflann.hpp>
+
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+
+DelayEmbedding::DelayEmbedding(std::span<const double> x, std::size_t dimension, std::size_t delay)
+    : x_(x), m_(dimension), tau_(delay), count_(0) {
+  if (dimension == 0 || delay == 0) {
+    throw Error("embedding", "dimension and delay must be at least 1");
+  }
+  const std::size_t span = (dimension - 1) * delay;
+  if (x.size() <= span) {
+    throw Error("embedding", fmt::format("{} samples cannot hold one vector of dimension {} "
+                                         "and delay {}",
+                                         x.size(), dimension, delay));
+  }
+  count_ = x.size() - span;
+}
+
+double DelayEmbedding::distance2(std::size_t i, std::size_t j) const {
+  double d2 = 0.0;
+  for (std::size_t d = 0; d < m_; ++d) {
+    const double diff = coordinate(i, d) - coordinate(j, d);
+    d2 += diff * diff;
+  }
+  return d2;
+}
+
+namespace {
+
+// nanoflann's dataset adaptor: the coordinates are read from the series on demand, so the
+// embedded vectors are never materialised.
+struct Adaptor {
+  const DelayEmbedding* e;
+  std::size_t points;
+  [[nodiscard]] std::size_t kdtree_get_point_count() const { return points; }
+  [[nodiscard]] double kdtree_get_pt(std::size_t i, std::size_t d) const {
+    return e->coordinate(i, d);
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
+                                                 Adaptor, -1, std::size_t>;
+
+// Result sets in nanoflann's protocol that drop the query's temporal neighbours and exact
+// repeats while the tree is searched, so no over-fetching is needed.
+class ExcludingKnn {
+ public:
+  ExcludingKnn(std::size_t query, std::size_t theiler, std::size_t k, double min_d2)
+      : query_(query), theiler_(theiler), k_(k), min_d2_(min_d2) {}
+  [[nodiscard]] std::size_t size() const { return found_.size(); }
+  [[nodiscard]] bool full() const { return found_.size() == k_; }
+  bool addPoint(double d2, std::size_t j) {
+    const std::size_t gap = j > query_ ? j - query_ : query_ - j;
+    if (gap <= theiler_ || d2 <= min_d2_) return true;
+    if (full() && d2 >= found_.back().distance2) return true;
+    auto pos = std::upper_bound(found_.begin(), found_.end(), d2,
+                                [](double v, const Neighbour& n) { return v < n.distance2; });
+    found_.insert(pos, Neighbour{j, d2});
+    if (found_.size() > k_) found_.pop_back();
+    return true;
+  }
+  [[nodiscard]] double worstDist() const {
+    return full() ? found_.back().distance2 : std::numeric_limits<double>::max();
+  }
+  std::vector<Neighbour> take() { return std::move(found_); }
+
+ private:
+  std::size_t query_, theiler_, k_;
+  double min_d2_;
+  std::vector<Neighbour> found_;
+};
+
+class ExcludingRadius {
+ public:
+  ExcludingRadius(std::size_t query, std::size_t theiler, double r2, double min_d2)
+      : query_(query), theiler_(theiler), r2_(r2), min_d2_(min_d2) {}
+  [[nodiscard]] std::size_t size() const { return found_.size(); }
+  [[nodiscard]] bool full() const { return true; }
+  bool addPoint(double d2, std::size_t j) {
+    const std::size_t gap = j > query_ ? j - query_ : query_ - j;
+    if (d2 < r2_ && gap > theiler_ && d2 > min_d2_) found_.push_back({j, d2});
+    return true;
+  }
+  [[nodiscard]] double worstDist() const { return r2_; }
+  std::vector<Neighbour> take() { return std::move(found_); }
+
+ private:
+  std::size_t query_, theiler_;
+  double r2_, min_d2_;
+  std::vector<Neighbour> found_;
+};
+
+}  // namespace
+
+struct NeighbourIndex::Impl {
+  const DelayEmbedding* embedding;
+  Adaptor adaptor;
+  Tree tree;
+  std::vector<double> query;
+  double min_d2;
+  Impl(const DelayEmbedding& e, std::size_t points, double resolution)
+      : embedding(&e),
+        adaptor{&e, points},
+        tree(static_cast<int>(e.dimension()), adaptor,
+             nanoflann::KDTreeSingleIndexAdaptorParams(16)),
+        query(e.dimension()),
+        min_d2(resolution * resolution) {
+    tree.buildIndex();
+  }
+  const double* point(std::size_t i) {
+    for (std::size_t d = 0; d < embedding->dimension(); ++d) query[d] = embedding->coordinate(i, d);
+    return query.data();
+  }
+};
+
+NeighbourIndex::NeighbourIndex(const DelayEmbedding& embedding, std::size_t points,
+                               double resolution)
+    : impl_(std::make_unique<Impl>(
+          embedding, points == 0 ? embedding.size() : std::min(points, embedding.size()),
+          resolution)) {}
+
+double repeat_resolution(std::span<const double> x) {
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  double var = 0.0;
+  for (double v : x) var += (v - mean) * (v - mean);
+  return 1e-9 * std::sqrt(var / static_cast<double>(x.size()));
+}
+NeighbourIndex::~NeighbourIndex() = default;
+
+std::size_t NeighbourIndex::size() const { return impl_->adaptor.points; }
+
+std::vector<Neighbour> NeighbourIndex::k_nearest(std::size_t i, std::size_t k,
+                                                 std::size_t theiler) const {
+  ExcludingKnn result(i, theiler, k, impl_->min_d2);
+  impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
+  return result.take();
+}
+
+Neighbour NeighbourIndex::nearest(std::size_t i, std::size_t theiler) const {
+  auto found = k_nearest(i, 1, theiler);
+  return found.empty() ? Neighbour{size(), 0.0} : found.front();
+}
+
+std::vector<Neighbour> NeighbourIndex::within(std::size_t i, double r, std::size_t theiler) const {
+  ExcludingRadius result(i, theiler, r * r, impl_->min_d2);
+  impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
+  return result.take();
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,173 @@
+#include "pneumachaos/analysis/embedding_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "pneumachaos/analysis/autocorrelation.hpp"
+#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+// Equiprobable bin of every sample: its rank scaled to [0, bins).
+std::vector<std::size_t> rank_bins(std::span<const double> x, std::size_t bins) {
+  std::vector<std::size_t> order(x.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+  std::vector<std::size_t> bin(x.size());
+  for (std::size_t r = 0; r < order.size(); ++r) bin[order[r]] = r * bins / order.size();
+  // Ties (quantised data) share one bin: take the bin of the first of equal values.
+  for (std::size_t r = 1; r < order.size(); ++r) {
+    if (x[order[r]] == x[order[r - 1]]) bin[order[r]] = bin[order[r - 1]];
+  }
+  return bin;
+}
+
+double mi_at(const std::vector<std::size_t>& bin, std::size_t bins, std::size_t lag,
+             std::vector<double>& joint) {
+  const std::size_t n = bin.size() - lag;
+  std::fill(joint.begin(), joint.end(), 0.0);
+  std::vector<double> pa(bins, 0.0), pb(bins, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    joint[bin[i] * bins + bin[i + lag]] += 1.0;
+    pa[bin[i]] += 1.0;
+    pb[bin[i + lag]] += 1.0;
+  }
+  double I = 0.0;
+  for (std::size_t a = 0; a < bins; ++a) {
+    for (std::size_t b = 0; b < bins; ++b) {
+      const double p = joint[a * bins + b];
+      if (p > 0.0) I += p / n * std::log(p * n / (pa[a] * pb[b]));
+    }
+  }
+  return I;
+}
+
+std::size_t default_bins(std::size_t n) {
+  return std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(n / 10.0)), 8, 64);
+}
+
+}  // namespace
+
+std::vector<double> mutual_information(std::span<const double> x, std::size_t max_lag,
+                                       std::size_t bins) {
+  if (x.size() < 32) throw Error("mutual information", "at least 32 samples are needed");
+  if (bins == 0) bins = default_bins(x.size());
+  max_lag = std::min(max_lag, x.size() / 2);
+  const auto bin = rank_bins(x, bins);
+  std::vector<double> joint(bins * bins);
+  std::vector<double> I(max_lag + 1);
+  for (std::size_t lag = 0; lag <= max_lag; ++lag) I[lag] = mi_at(bin, bins, lag, joint);
+  return I;
+}
+
+DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag) {
+  if (x.size() < 32) throw Error("embedding delay", "at least 32 samples are needed");
+  if (max_lag == 0) max_lag = std::max<std::size_t>(8, x.size() / 10);
+  const std::size_t bins = default_bins(x.size());
+  const auto bin = rank_bins(x, bins);
+  std::vector<double> joint(bins * bins);
+  // Plug-in bias of I for independent data, (B - 1)^2 / (2 N): the level the estimate sinks
+  // to once the record has decorrelated.
+  const double floor = std::pow(bins - 1.0, 2) / (2.0 * x.size());
+  DelayChoice c;
+  const auto I = [&](std::size_t lag) {
+    while (c.ami.size() <= lag) c.ami.push_back(mi_at(bin, bins, c.ami.size(), joint));
+    return c.ami[lag];
+  };
+  // Smoothed over +-2 lags: binning makes the estimate jitter from lag to lag.
+  const auto S = [&](std::size_t lag) {
+    double sum = 0.0;
+    const std::size_t lo = lag >= 2 ? lag - 2 : 0;
+    for (std::size_t k = lo; k <= lag + 2; ++k) sum += I(k);
+    return sum / static_cast<double>(lag + 3 - lo);
+  };
+  const double deep_enough = I(1) - 0.25 * (I(1) - floor);
+  bool fallback = false;
+  for (std::size_t lag = 2; lag + 2 <= max_lag && !fallback; ++lag) {
+    if (I(lag) < 3.0 * floor) {
+      fallback = true;  // decorrelated without a minimum: maps, noise
+      break;
+    }
+    const std::size_t w = std::max<std::size_t>(2, lag / 4);
+    if (lag + w + 2 > max_lag) break;
+    const double here = S(lag);
+    if (here > deep_enough) continue;
+    bool is_min = true;
+    for (std::size_t k = lag - std::min(lag - 1, w); k <= lag + w; ++k) {
+      if (S(k) < here) is_min = false;
+    }
+    if (!is_min) continue;
+    // A real minimum is followed by a rise above the estimator's noise within one more delay.
+    double rise = 0.0;
+    for (std::size_t k = lag + 1; k <= std::min(2 * lag, max_lag - 2); ++k) {
+      rise = std::max(rise, S(k) - here);
+    }
+    if (rise > floor) {
+      c.delay = lag;
+      c.method = "mutual-information minimum";
+      return c;
+    }
+  }
+  const Autocorrelation acf = autocorrelation(x, 1.0);
+  c.delay = std::max<std::size_t>(1, static_cast<std::size_t>(std::max(acf.one_over_e_s, 1.0)));
+  c.method = "autocorrelation 1/e";
+  return c;
+}
+
+DimensionChoice choose_dimension(std::span<const double> x, std::size_t delay, std::size_t theiler,
+                                 std::size_t max_dimension, double saturation) {
+  DimensionChoice c;
+  const double resolution = repeat_resolution(x);
+  // E(d), E*(d) for growing d, stopping as soon as E1 has saturated.
+  std::vector<double> E, Es;
+  const auto compute = [&](std::size_t d) {
+    // Vectors that also exist in dimension d + 1, so one index set serves both; at most
+    // 1500 reference points (spread over the record) keep the cost near N log N.
+    const DelayEmbedding emb(x, d + 1, delay);
+    const DelayEmbedding low(x, d, delay);
+    const NeighbourIndex index(low, emb.size(), resolution);
+    const std::size_t stride = std::max<std::size_t>(1, emb.size() / 1500);
+    double sum = 0.0, sum_star = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < emb.size(); i += stride) {
+      const Neighbour nb = index.nearest(i, theiler);
+      if (nb.index >= emb.size()) continue;
+      sum += std::sqrt(emb.distance2(i, nb.index) / nb.distance2);
+      sum_star += std::abs(x[i + d * delay] - x[nb.index + d * delay]);
+      ++count;
+    }
+    if (count == 0) throw Error("embedding dimension", "no neighbours outside the Theiler window");
+    E.push_back(sum / count);
+    Es.push_back(sum_star / count);
+  };
+  compute(1);
+  // E1 climbs to a plateau near (not exactly at) 1 once the attractor is unfolded; its value
+  // there varies with the record, so saturation is judged against the plateau itself: the
+  // first d with E1(d) >= saturation * plateau, once two successive E1 exceed 0.8.
+  for (std::size_t d = 1; d <= max_dimension; ++d) {
+    compute(d + 1);
+    c.E1.push_back(E[d] / E[d - 1]);
+    c.E2.push_back(Es[d] / Es[d - 1]);
+    const std::size_t n = c.E1.size();
+    if (n >= 2 && c.E1[n - 1] > 0.8 && c.E1[n - 2] > 0.8) break;
+  }
+  const double plateau = *std::max_element(c.E1.begin(), c.E1.end());
+  c.dimension = 0;
+  for (std::size_t d = 1; d <= c.E1.size() && c.dimension == 0; ++d) {
+    if (plateau > 0.8 && c.E1[d - 1] >= saturation * plateau) c.dimension = d;
+  }
+  // No plateau (noise, or noise-dominated small scales): the first flattening of E1.
+  for (std::size_t d = 2; c.dimension == 0 && d <= c.E1.size(); ++d) {
+    if (c.E1[d - 1] - c.E1[d - 2] < 0.05) c.dimension = d - 1;
+  }
+  if (c.dimension == 0) c.dimension = max_dimension;
+  return c;
+}
+
+}  // namespace pneumachaos

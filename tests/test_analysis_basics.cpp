@@ -1,0 +1,136 @@
+// Spectrum, autocorrelation and embedding parameters on series with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "pneumachaos/analysis/autocorrelation.hpp"
+#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "pneumachaos/analysis/embedding_parameters.hpp"
+#include "pneumachaos/analysis/spectrum.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "reference_series.hpp"
+
+namespace pneumachaos {
+namespace {
+
+using namespace pneumachaos::testing;
+
+TEST(Spectrum, SinePeakWithinOneBinAndParsevalHolds) {
+  const double rate = 1000.0;
+  for (double f : {7.3, 12.5, 41.0}) {
+    const auto x = sine(10000, f, rate);
+    const Spectrum s = welch_spectrum(x, rate);
+    EXPECT_LE(std::abs(s.peak_frequency_Hz - f), s.resolution_Hz) << f;
+    EXPECT_GT(s.peak_share, 0.9);
+    EXPECT_LT(s.broadband_share, 0.05);
+    // The PSD integrates to the variance (1/2 for a unit sine): Welch with Hann keeps power.
+    double power = 0.0;
+    for (double p : s.psd) power += p * s.resolution_Hz;
+    EXPECT_NEAR(power, 0.5, 0.01);
+  }
+}
+
+TEST(Spectrum, WhiteNoiseIsFlatAtItsVariance) {
+  const double rate = 1000.0;
+  const auto x = white_noise(20000);
+  const Spectrum s = welch_spectrum(x, rate);
+  // One-sided white PSD = 2 sigma^2 / fs = 2e-3 per Hz.
+  double mean = 0.0;
+  for (std::size_t k = 1; k + 1 < s.psd.size(); ++k) mean += s.psd[k];
+  mean /= static_cast<double>(s.psd.size() - 2);
+  EXPECT_NEAR(mean, 2e-3, 1e-4);
+  EXPECT_GT(s.spectral_flatness, 0.8);  // averaged periodograms: ~0.9 rather than 1
+  EXPECT_GT(s.broadband_share, 0.9);
+}
+
+TEST(Spectrum, TooShortIsAnError) {
+  const auto x = white_noise(40);
+  EXPECT_THROW(welch_spectrum(x, 1000.0), Error);
+}
+
+TEST(Autocorrelation, SineIsCosineAndNoiseIsNearZero) {
+  const auto x = sine(10000, 10.0, 1000.0);
+  const Autocorrelation a = autocorrelation(x, 1000.0);
+  // r(k) = cos(2 pi f k / fs) times the biased estimator's taper (1 - k/N), plus a finite-sum
+  // term sum cos(2 a i + a k) / N of order 1 / (N sin a) = 1.6e-3 here (a = 2 pi f / fs).
+  for (std::size_t k : {0u, 10u, 25u, 50u, 100u, 1000u}) {
+    EXPECT_NEAR(a.r[k], std::cos(2.0 * std::numbers::pi * 10.0 * k / 1000.0) * (1.0 - k / 10000.0),
+                3e-3)
+        << k;
+  }
+  EXPECT_NEAR(a.first_zero_s, 0.025, 0.0011);
+  EXPECT_GT(a.late_envelope, 0.7);
+  EXPECT_LT(a.envelope_decay_per_s, 0.5);
+
+  const auto n = white_noise(10000);
+  const Autocorrelation b = autocorrelation(n, 1000.0);
+  double worst = 0.0;
+  for (std::size_t k = 1; k < b.r.size(); ++k) worst = std::max(worst, std::abs(b.r[k]));
+  EXPECT_LT(worst, 4.5 / std::sqrt(10000.0));  // 4.5 sigma over 2500 lags
+  EXPECT_LT(b.late_envelope, 0.05);
+}
+
+TEST(Embedding, NeighbourSearchMatchesBruteForceAndHonoursTheTheilerWindow) {
+  const auto x = lorenz_x(3000);
+  const DelayEmbedding e(x, 3, 17);
+  const NeighbourIndex index(e);
+  for (std::size_t i : {std::size_t{0}, std::size_t{500}, std::size_t{1234}, e.size() - 1}) {
+    double best = 1e300;
+    std::size_t arg = 0;
+    for (std::size_t j = 0; j < e.size(); ++j) {
+      const std::size_t gap = j > i ? j - i : i - j;
+      if (gap <= 50) continue;
+      if (e.distance2(i, j) < best) {
+        best = e.distance2(i, j);
+        arg = j;
+      }
+    }
+    const Neighbour nb = index.nearest(i, 50);
+    EXPECT_EQ(nb.index, arg);
+    EXPECT_DOUBLE_EQ(nb.distance2, best);
+  }
+}
+
+TEST(Embedding, ExactRepeatsAreSkipped) {
+  // A quantised record: many exact repeats, which carry no direction.
+  std::vector<double> x(2000);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::round(10.0 * std::sin(0.1 * i));
+  const DelayEmbedding e(x, 2, 3);
+  const NeighbourIndex index(e, 0, repeat_resolution(x));
+  for (std::size_t i = 0; i < e.size(); i += 97) {
+    const Neighbour nb = index.nearest(i, 5);
+    ASSERT_LT(nb.index, e.size());
+    EXPECT_GT(nb.distance2, 0.0);
+  }
+}
+
+TEST(EmbeddingParameters, TextbookDelaysAndDimensions) {
+  // Lorenz x at dt = 0.01: first AMI minimum near 0.15-0.2 time units (Fraser & Swinney
+  // 1986 give ~0.16), dimension 3; Henon: delay 1, dimension 2.
+  const auto lorenz = lorenz_x(10000);
+  const DelayChoice d = choose_delay(lorenz);
+  EXPECT_EQ(d.method, "mutual-information minimum");
+  EXPECT_GE(d.delay, 15u);
+  EXPECT_LE(d.delay, 20u);
+  const Autocorrelation acf = autocorrelation(lorenz, 1.0);
+  EXPECT_EQ(choose_dimension(lorenz, d.delay, static_cast<std::size_t>(acf.first_zero_s)).dimension,
+            3u);
+
+  const auto henon = henon_map(10000);
+  const DelayChoice h = choose_delay(henon);
+  EXPECT_EQ(h.delay, 1u);
+  EXPECT_EQ(choose_dimension(henon, h.delay, 1).dimension, 2u);
+}
+
+TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
+  // 10 Hz at 1 kHz: a quarter period is 25 samples (a 16-bin equal-width AMI puts the
+  // minimum at ~5, ANALYSIS.md).
+  const auto x = sine(10000, 10.0, 1000.0, 0.05);
+  const DelayChoice d = choose_delay(x);
+  EXPECT_GE(d.delay, 22u);
+  EXPECT_LE(d.delay, 28u);
+}
+
+}  // namespace
+}  // namespace pneumachaos
