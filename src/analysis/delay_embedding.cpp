@@ -7,6 +7,7 @@
 #include <limits>
 #include <nanoflann.hpp>
 
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -132,14 +133,7 @@ NeighbourIndex::NeighbourIndex(const DelayEmbedding& embedding, std::size_t poin
           embedding, points == 0 ? embedding.size() : std::min(points, embedding.size()),
           resolution)) {}
 
-double repeat_resolution(std::span<const double> x) {
-  double mean = 0.0;
-  for (double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  double var = 0.0;
-  for (double v : x) var += (v - mean) * (v - mean);
-  return 1e-9 * std::sqrt(var / static_cast<double>(x.size()));
-}
+double repeat_resolution(std::span<const double> x) { return 1e-9 * standard_deviation(x); }
 NeighbourIndex::~NeighbourIndex() = default;
 
 std::size_t NeighbourIndex::size() const { return impl_->adaptor.points; }

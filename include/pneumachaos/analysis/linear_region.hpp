@@ -1,0 +1,30 @@
+#pragma once
+// The linear region of a curve (e.g. a divergence curve), found without hand tuning.
+
+#include <cstddef>
+#include <vector>
+
+namespace pneumachaos {
+
+struct LineFit {
+  double slope = 0.0;
+  double intercept = 0.0;
+};
+
+/// Least-squares line through y[first..last] against the index.
+LineFit fit_line(const std::vector<double>& y, std::size_t first, std::size_t last);
+
+struct LinearRegion {
+  bool found = false;
+  std::size_t first = 0, last = 0;
+  double slope = 0.0, intercept = 0.0;
+};
+
+/// Samples the curve every `spacing` points and splits it into runs whose successive segment
+/// slopes stay within `tolerance` (relative) of the run's mean slope; the longest rising run
+/// wins (ties: the earlier one), and the line is fitted to all points it covers. A run must
+/// span at least three segments. This follows the idea of ChaosTools.jl's linear_region.
+LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
+                                double tolerance);
+
+}  // namespace pneumachaos

@@ -1,0 +1,151 @@
+#include "pneumachaos/analysis/lyapunov_divergence.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "pneumachaos/analysis/linear_region.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+// Cubic Lagrange interpolation of x at fractional index t (1 <= t <= size - 3).
+double interpolate(std::span<const double> x, double t) {
+  const auto i = static_cast<std::size_t>(std::floor(t));
+  const double u = t - static_cast<double>(i);
+  const double p0 = x[i - 1], p1 = x[i], p2 = x[i + 1], p3 = x[i + 2];
+  return p1 + 0.5 * u *
+                  (p2 - p0 +
+                   u * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + u * (3.0 * (p1 - p2) + p3 - p0)));
+}
+
+// Offset s in [-1, 1] samples that brings trajectory j + s closest to reference i: one
+// Newton step on |y_i - y_{j+s}|^2 along the tangent (y_{j+1} - y_{j-1}) / 2, then a second
+// from the interpolated point.
+double align(std::span<const double> x, const DelayEmbedding& e, std::size_t i, std::size_t j) {
+  double s = 0.0;
+  for (int iteration = 0; iteration < 2; ++iteration) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t d = 0; d < e.dimension(); ++d) {
+      const double t = static_cast<double>(j + d * e.delay()) + s;
+      const double here = interpolate(x, t);
+      const double tangent = 0.5 * (interpolate(x, t + 1.0) - interpolate(x, t - 1.0));
+      num += (here - e.coordinate(i, d)) * tangent;
+      den += tangent * tangent;
+    }
+    if (den <= 0.0) break;
+    s = std::clamp(s - num / den, -1.0, 1.0);
+  }
+  return s;
+}
+
+}  // namespace
+
+void DivergenceOptions::validate(std::size_t n) const {
+  if (dimension == 0 || delay == 0) throw Error("lyapunov", "dimension and delay must be >= 1");
+  if (n < 100) throw Error("lyapunov", fmt::format("{} samples: at least 100 are needed", n));
+  if (!(slope_tolerance > 0.0)) throw Error("lyapunov.slope_tolerance", "must be positive");
+  if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
+}
+
+DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
+                                     const DivergenceOptions& o) {
+  o.validate(x.size());
+  DivergenceResult r;
+  r.aligned = o.alignment == DivergenceOptions::Alignment::kOn ||
+              (o.alignment == DivergenceOptions::Alignment::kAuto && o.delay >= 3);
+  const std::size_t period = o.typical_period > 0
+                                 ? o.typical_period
+                                 : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
+  const std::size_t K =
+      o.horizon > 0 ? o.horizon : std::max<std::size_t>(20, std::min(x.size() / 10, 8 * period));
+  const DelayEmbedding e(x, o.dimension, o.delay);
+  // Room for K steps ahead, and for the interpolation stencil around shifted neighbours.
+  const std::size_t margin = r.aligned ? 2 : 0;
+  if (e.size() <= K + 2 * margin + o.theiler + 10) {
+    throw Error("lyapunov", fmt::format("{} samples are too few to follow {} steps with "
+                                        "dimension {} and delay {}",
+                                        x.size(), K, o.dimension, o.delay));
+  }
+  const std::size_t usable = e.size() - K - margin;
+  const NeighbourIndex index(e, usable, repeat_resolution(x));
+  const std::size_t max_refs = std::max<std::size_t>(200, o.max_reference_steps / (K + 1));
+  const std::size_t stride = std::max<std::size_t>(1, usable / max_refs);
+  const std::size_t blocks = o.jackknife_blocks;
+  // Per block sums of ln d(k) and counts, for the jackknife.
+  std::vector<std::vector<double>> sum(blocks, std::vector<double>(K + 1, 0.0));
+  std::vector<std::vector<double>> count(blocks, std::vector<double>(K + 1, 0.0));
+  for (std::size_t i = margin; i < usable; i += stride) {
+    const Neighbour nb = index.nearest(i, o.theiler);
+    if (nb.index >= usable || nb.index < margin) continue;
+    const double s = r.aligned ? align(x, e, i, nb.index) : 0.0;
+    const std::size_t b = std::min(blocks - 1, (i * blocks) / usable);
+    for (std::size_t k = 0; k <= K; ++k) {
+      double d2 = 0.0;
+      for (std::size_t d = 0; d < e.dimension(); ++d) {
+        const double other =
+            r.aligned ? interpolate(x, static_cast<double>(nb.index + k + d * e.delay()) + s)
+                      : e.coordinate(nb.index + k, d);
+        const double diff = e.coordinate(i + k, d) - other;
+        d2 += diff * diff;
+      }
+      if (d2 > 0.0) {
+        sum[b][k] += 0.5 * std::log(d2);
+        count[b][k] += 1.0;
+      }
+    }
+    ++r.references;
+  }
+  if (r.references < 20) throw Error("lyapunov", "fewer than 20 reference points have neighbours");
+
+  const auto curve_without = [&](std::size_t skip) {
+    std::vector<double> S(K + 1, 0.0);
+    for (std::size_t k = 0; k <= K; ++k) {
+      double s = 0.0, c = 0.0;
+      for (std::size_t b = 0; b < blocks; ++b) {
+        if (b == skip) continue;
+        s += sum[b][k];
+        c += count[b][k];
+      }
+      S[k] = c > 0 ? s / c : 0.0;
+    }
+    return S;
+  };
+  r.curve = curve_without(blocks);  // skip none
+
+  const std::size_t spacing =
+      o.slope_spacing > 0 ? o.slope_spacing : std::max<std::size_t>(1, period / 2);
+  const LinearRegion region = find_linear_region(r.curve, spacing, o.slope_tolerance);
+  r.found_linear_region = region.found;
+  r.fit_first = region.first;
+  r.fit_last = region.last;
+  r.slope_per_step = region.slope;
+  r.intercept = region.intercept;
+  r.lambda_per_s = region.slope * rate_Hz;
+
+  // Jackknife over blocks of references on the chosen window, plus the change when the window
+  // is narrowed by one spacing at either end (the choice of window is part of the estimate).
+  std::vector<double> slopes;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    slopes.push_back(fit_line(curve_without(b), r.fit_first, r.fit_last).slope);
+  }
+  const double mean = std::accumulate(slopes.begin(), slopes.end(), 0.0) / blocks;
+  double var = 0.0;
+  for (double s : slopes) var += (s - mean) * (s - mean);
+  const double jack = std::sqrt(var * (blocks - 1.0) / blocks);
+  double window = 0.0;
+  if (r.fit_last - r.fit_first > 4 * spacing) {
+    const double a = fit_line(r.curve, r.fit_first + spacing, r.fit_last).slope;
+    const double c = fit_line(r.curve, r.fit_first, r.fit_last - spacing).slope;
+    window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));
+  }
+  r.uncertainty_per_s = std::hypot(jack, window) * rate_Hz;
+  return r;
+}
+
+}  // namespace pneumachaos
