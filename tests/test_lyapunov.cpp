@@ -7,6 +7,7 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
+#include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "reference_series.hpp"
 
 namespace pneumachaos {
@@ -77,6 +78,48 @@ TEST(Divergence, SineSineWithNoiseAndWhiteNoiseHaveNoRisingRegion) {
                  r.lambda_per_s > 3.0 * r.uncertainty_per_s)
         << r.lambda_per_s << " +- " << r.uncertainty_per_s;
   }
+}
+
+}  // namespace
+}  // namespace pneumachaos
+
+namespace pneumachaos {
+namespace {
+
+WolfOptions wolf_automatic(const std::vector<double>& x) {
+  const DivergenceOptions d = automatic(x);
+  WolfOptions o;
+  o.dimension = d.dimension;
+  o.delay = d.delay;
+  o.theiler = d.theiler;
+  return o;
+}
+
+class WolfTest : public ::testing::TestWithParam<Reference> {};
+
+// ANALYSIS.md asks 15 % for Wolf. Lorenz is not listed: with 1e4 samples the defaults give
+// +20 to +50 % depending on the record (docs/analysis.md); that is an open defect, not a
+// tolerance to widen.
+TEST_P(WolfTest, WithinFifteenPercentOfTheReference) {
+  const Reference& ref = GetParam();
+  const auto x = ref.make();
+  const WolfResult r = wolf_exponent(x, 1.0 / ref.step, wolf_automatic(x));
+  EXPECT_NEAR(r.lambda_per_s / ref.lambda, 1.0, 0.15) << ref.name << ": " << r.lambda_per_s;
+  ASSERT_FALSE(r.running_per_s.empty());
+  EXPECT_EQ(r.running_per_s.size(), r.running_time_s.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    References, WolfTest,
+    ::testing::Values(Reference{"logistic", [] { return logistic_map(10000); }, 1.0, std::log(2.0)},
+                      Reference{"henon", [] { return henon_map(10000); }, 1.0, 0.419},
+                      Reference{"rossler", [] { return rossler_x(10000); }, 0.1, 0.0714}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Wolf, StrictlyPeriodicRecordMeasuresNoStretching) {
+  const auto x = sine(10000, 10.0, 1000.0);
+  const WolfResult r = wolf_exponent(x, 1000.0, wolf_automatic(x));
+  EXPECT_EQ(r.lambda_per_s, 0.0);
 }
 
 }  // namespace

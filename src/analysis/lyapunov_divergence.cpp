@@ -6,45 +6,12 @@
 #include <cmath>
 #include <numeric>
 
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "pneumachaos/analysis/continuous_alignment.hpp"
 #include "pneumachaos/analysis/linear_region.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
-namespace {
-
-// Cubic Lagrange interpolation of x at fractional index t (1 <= t <= size - 3).
-double interpolate(std::span<const double> x, double t) {
-  const auto i = static_cast<std::size_t>(std::floor(t));
-  const double u = t - static_cast<double>(i);
-  const double p0 = x[i - 1], p1 = x[i], p2 = x[i + 1], p3 = x[i + 2];
-  return p1 + 0.5 * u *
-                  (p2 - p0 +
-                   u * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + u * (3.0 * (p1 - p2) + p3 - p0)));
-}
-
-// Offset s in [-1, 1] samples that brings trajectory j + s closest to reference i: one
-// Newton step on |y_i - y_{j+s}|^2 along the tangent (y_{j+1} - y_{j-1}) / 2, then a second
-// from the interpolated point.
-double align(std::span<const double> x, const DelayEmbedding& e, std::size_t i, std::size_t j) {
-  double s = 0.0;
-  for (int iteration = 0; iteration < 2; ++iteration) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t d = 0; d < e.dimension(); ++d) {
-      const double t = static_cast<double>(j + d * e.delay()) + s;
-      const double here = interpolate(x, t);
-      const double tangent = 0.5 * (interpolate(x, t + 1.0) - interpolate(x, t - 1.0));
-      num += (here - e.coordinate(i, d)) * tangent;
-      den += tangent * tangent;
-    }
-    if (den <= 0.0) break;
-    s = std::clamp(s - num / den, -1.0, 1.0);
-  }
-  return s;
-}
-
-}  // namespace
 
 void DivergenceOptions::validate(std::size_t n) const {
   if (dimension == 0 || delay == 0) throw Error("lyapunov", "dimension and delay must be >= 1");
@@ -58,7 +25,7 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   o.validate(x.size());
   DivergenceResult r;
   r.aligned = o.alignment == DivergenceOptions::Alignment::kOn ||
-              (o.alignment == DivergenceOptions::Alignment::kAuto && o.delay >= 3);
+              (o.alignment == DivergenceOptions::Alignment::kAuto && is_oversampled_flow(o.delay));
   const std::size_t period = o.typical_period > 0
                                  ? o.typical_period
                                  : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
@@ -83,17 +50,11 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   for (std::size_t i = margin; i < usable; i += stride) {
     const Neighbour nb = index.nearest(i, o.theiler);
     if (nb.index >= usable || nb.index < margin) continue;
-    const double s = r.aligned ? align(x, e, i, nb.index) : 0.0;
+    const double s = r.aligned ? closest_offset(e, i, nb.index) : 0.0;
     const std::size_t b = std::min(blocks - 1, (i * blocks) / usable);
     for (std::size_t k = 0; k <= K; ++k) {
-      double d2 = 0.0;
-      for (std::size_t d = 0; d < e.dimension(); ++d) {
-        const double other =
-            r.aligned ? interpolate(x, static_cast<double>(nb.index + k + d * e.delay()) + s)
-                      : e.coordinate(nb.index + k, d);
-        const double diff = e.coordinate(i + k, d) - other;
-        d2 += diff * diff;
-      }
+      const double d2 = r.aligned ? distance2_to(e, i + k, static_cast<double>(nb.index + k) + s)
+                                  : e.distance2(i + k, nb.index + k);
       if (d2 > 0.0) {
         sum[b][k] += 0.5 * std::log(d2);
         count[b][k] += 1.0;

@@ -1,0 +1,32 @@
+#pragma once
+// Delay vectors between samples, for oversampled flows: cubic interpolation of the series and
+// the time offset that brings a neighbouring trajectory closest to a reference point. The
+// nearest SAMPLE on a neighbouring orbit is off by up to half a sample spacing along the
+// flow; that offset never grows and biases divergence-based exponents low.
+
+#include <cstddef>
+#include <span>
+
+#include "pneumachaos/analysis/delay_embedding.hpp"
+
+namespace pneumachaos {
+
+/// Cubic Lagrange interpolation of x at fractional index t, 1 <= t <= size - 3.
+double interpolate_series(std::span<const double> x, double t);
+
+/// Coordinate d of the delay vector at fractional index t.
+inline double interpolated_coordinate(const DelayEmbedding& e, double t, std::size_t d) {
+  return interpolate_series(e.series(), t + static_cast<double>(d * e.delay()));
+}
+
+/// Offset s in [-1, 1] samples minimising |y_i - y_{j+s}|: two Newton steps along the
+/// trajectory's tangent. Needs 1 <= j - 1 and j + 2 + (m-1) delay < size.
+double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j);
+
+/// |y_i - y_{j+s}|^2 with the neighbour at fractional time j + s.
+double distance2_to(const DelayEmbedding& e, std::size_t i, double j_plus_s);
+
+/// Whether a record with this delay is treated as an oversampled flow (alignment applies).
+inline bool is_oversampled_flow(std::size_t delay) { return delay >= 3; }
+
+}  // namespace pneumachaos
