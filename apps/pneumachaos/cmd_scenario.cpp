@@ -10,16 +10,13 @@ namespace pneumachaos::cli {
 
 Action add_scenario(CLI::App& app) {
   struct Args {
-    std::string scenario;
-    std::vector<std::string> sets;
+    ScenarioArgs scenario;
     bool keys = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "scenario", "Print a complete, commented scenario (defaults, or a file with overrides)");
-  cmd->add_option("scenario", args->scenario, "scenario TOML file to start from")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->sets, "override a scenario key");
+  add_scenario_options(cmd, args->scenario);
   cmd->add_flag("--keys", args->keys, "list every key with its unit and range (Markdown table)");
   return [args]() {
     if (args->keys) {
@@ -31,7 +28,7 @@ Action add_scenario(CLI::App& app) {
       }
       return kExitOk;
     }
-    fmt::print("{}", scenario_to_toml(build_scenario(args->scenario, args->sets)));
+    fmt::print("{}", scenario_to_toml(build_scenario(args->scenario.file, args->scenario.sets)));
     return kExitOk;
   };
 }

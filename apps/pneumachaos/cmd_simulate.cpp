@@ -15,8 +15,7 @@ namespace pneumachaos::cli {
 namespace {
 
 struct SimulateArgs {
-  std::string scenario;
-  std::vector<std::string> sets;
+  ScenarioArgs scenario;
   std::optional<double> duration_s;
   std::optional<double> rate_Hz;
   std::string output;
@@ -30,18 +29,15 @@ Action add_simulate(CLI::App& app) {
       "simulate",
       "Simulate the cylinder and write its time response as CSV (t, x, v, P1, P2, "
       "friction force and state, stuck flag)");
-  cmd->add_option("scenario", args->scenario, "scenario TOML file (default: built-in scenario)")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->sets, "override a scenario key, e.g. --set circuit.S2_mm2=0.05")
-      ->allow_extra_args(false);
+  add_scenario_options(cmd, args->scenario);
   cmd->add_option("--duration", args->duration_s, "simulated time [s] (run.duration_s)");
   cmd->add_option("--rate", args->rate_Hz, "output sample rate [Hz] (run.rate_Hz)");
   cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)");
   return [args]() {
-    std::vector<std::string> sets = args->sets;
+    std::vector<std::string> sets = args->scenario.sets;
     if (args->duration_s) sets.push_back(fmt::format("run.duration_s={}", *args->duration_s));
     if (args->rate_Hz) sets.push_back(fmt::format("run.rate_Hz={}", *args->rate_Hz));
-    const Scenario scenario = build_scenario(args->scenario, sets);
+    const Scenario scenario = build_scenario(args->scenario.file, sets);
     const Plant plant(scenario);
     const SimulationResult result = simulate(plant, SimulationOptions::from(scenario.run));
     fmt::print(stderr, "simulate: {}\n", describe(result.summary));

@@ -14,8 +14,7 @@ namespace pneumachaos::cli {
 
 Action add_stability(CLI::App& app) {
   struct Args {
-    std::string scenario;
-    std::vector<std::string> sets;
+    ScenarioArgs scenario;
     std::vector<std::string> grids;
     bool json = false;
     bool map = false;
@@ -27,9 +26,7 @@ Action add_stability(CLI::App& app) {
       "stability",
       "Linear stability of the steady motion: the paper's a1/b1 and damping coefficient beside "
       "the full model's eigenvalues; --map evaluates it over a grid");
-  cmd->add_option("scenario", args->scenario, "scenario TOML file (default: built-in scenario)")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->sets, "override a scenario key, e.g. --set circuit.S2_mm2=0.2");
+  add_scenario_options(cmd, args->scenario);
   cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
   cmd->add_option("--position-mm", args->position_mm,
                   "piston position for the chamber volumes [mm] (default: mid-stroke)");
@@ -38,7 +35,7 @@ Action add_stability(CLI::App& app) {
                   "grid axis KEY=FROM:TO:STEP in the key's unit (with --map; repeatable)");
   cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)");
   return [args]() {
-    const Scenario scenario = build_scenario(args->scenario, args->sets);
+    const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     StabilityOptions options;
     if (args->position_mm >= 0.0) options.equilibrium.position_m = args->position_mm * 1e-3;
     if (!args->map) {

@@ -4,11 +4,21 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace pneumachaos::cli {
 
 /// The action returns the process exit code.
 using Action = std::function<int()>;
+
+/// The options every scenario-driven command takes: a positional TOML file (default: the
+/// built-in scenario) and repeatable --set key=value overrides.
+struct ScenarioArgs {
+  std::string file;
+  std::vector<std::string> sets;
+};
+void add_scenario_options(CLI::App* cmd, ScenarioArgs& args);
 
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);
