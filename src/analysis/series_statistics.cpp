@@ -16,11 +16,11 @@ double standard_deviation(std::span<const double> x) {
   return x.empty() ? 0.0 : std::sqrt(v / static_cast<double>(x.size()));
 }
 
-double mean_maxima_spacing(std::span<const double> x) {
+std::vector<std::size_t> maxima_indices(std::span<const double> x) {
   // Peaks separated by a fall of at least a quarter standard deviation (hysteresis), so that
   // measurement noise riding on an oscillation does not count as extra maxima.
   const double h = 0.25 * standard_deviation(x);
-  std::size_t first = 0, last = 0, count = 0;
+  std::vector<std::size_t> peaks;
   bool rising = true;
   double extreme = x.empty() ? 0.0 : x[0];
   std::size_t at = 0;
@@ -30,9 +30,7 @@ double mean_maxima_spacing(std::span<const double> x) {
         extreme = x[i];
         at = i;
       } else if (x[i] < extreme - h) {
-        if (count == 0) first = at;
-        last = at;
-        ++count;
+        peaks.push_back(at);
         rising = false;
         extreme = x[i];
       }
@@ -44,8 +42,14 @@ double mean_maxima_spacing(std::span<const double> x) {
       at = i;
     }
   }
-  return count >= 2 ? static_cast<double>(last - first) / static_cast<double>(count - 1)
-                    : static_cast<double>(x.size());
+  return peaks;
+}
+
+double mean_maxima_spacing(std::span<const double> x) {
+  const auto peaks = maxima_indices(x);
+  return peaks.size() >= 2 ? static_cast<double>(peaks.back() - peaks.front()) /
+                                 static_cast<double>(peaks.size() - 1)
+                           : static_cast<double>(x.size());
 }
 
 }  // namespace pneumachaos

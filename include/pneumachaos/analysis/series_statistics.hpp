@@ -3,11 +3,16 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace pneumachaos {
 
 double mean_of(std::span<const double> x);
 double standard_deviation(std::span<const double> x);
+
+/// Indices of the maxima of x, each followed by a fall of at least a quarter standard
+/// deviation before the next counts (hysteresis against noise riding on an oscillation).
+std::vector<std::size_t> maxima_indices(std::span<const double> x);
 
 /// Mean number of samples between successive maxima (each followed by a fall of at least
 /// a quarter standard deviation): the orbital period of an oscillating flow (Lorenz: one

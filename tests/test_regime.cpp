@@ -1,0 +1,77 @@
+// The regime verdict on records whose regime is known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "reference_series.hpp"
+
+namespace pneumachaos {
+namespace {
+
+using namespace pneumachaos::testing;
+
+TEST(Regime, SineSineWithNoiseAndWhiteNoiseAreNeverChaotic) {
+  for (double noise : {0.0, 0.05, 0.2}) {
+    const AnalysisResult r = analyze_series(sine(10000, 10.0, 1000.0, noise), 1000.0);
+    EXPECT_FALSE(r.verdict.chaotic) << "noise " << noise;
+    EXPECT_NE(r.verdict.regime, Regime::kChaotic);
+  }
+  const AnalysisResult n = analyze_series(white_noise(10000), 1000.0);
+  EXPECT_FALSE(n.verdict.chaotic);
+  // Wolf alone is fooled by noise, as ANALYSIS.md warns of the peers; the verdict is not.
+  EXPECT_GT(n.wolf.lambda_per_s, 10.0);
+  const AnalysisResult s = analyze_series(sine(10000, 10.0, 1000.0), 1000.0);
+  EXPECT_EQ(s.verdict.regime, Regime::kPeriodic);
+}
+
+TEST(Regime, ChaoticReferencesAreChaotic) {
+  EXPECT_TRUE(analyze_series(logistic_map(10000), 1.0).verdict.chaotic);
+  EXPECT_TRUE(analyze_series(henon_map(10000), 1.0).verdict.chaotic);
+  EXPECT_TRUE(analyze_series(lorenz_x(10000), 100.0).verdict.chaotic);
+}
+
+TEST(Regime, PhaseCoherentChaosIsUndeterminedNotPeriodic) {
+  // Rossler's exponent is clearly positive but its autocorrelation barely decays within the
+  // record; the spec's chaotic needs both, and periodic must not contradict the exponent.
+  const AnalysisResult r = analyze_series(rossler_x(10000), 10.0);
+  EXPECT_FALSE(r.verdict.chaotic);
+  EXPECT_EQ(r.verdict.regime, Regime::kUndetermined);
+  EXPECT_GT(r.divergence.lambda_per_s, 3.0 * r.divergence.uncertainty_per_s);
+}
+
+TEST(Regime, StickSlipAndSteadyRecords) {
+  // A velocity that rests at exactly zero for 40 % of each 0.5 s cycle, then a half sine.
+  std::vector<double> ss(10000);
+  for (std::size_t i = 0; i < ss.size(); ++i) {
+    const double phase = std::fmod(2.0 * static_cast<double>(i) / 1000.0, 1.0);
+    ss[i] = phase < 0.4 ? 0.0 : 0.1 * std::sin((phase - 0.4) / 0.6 * std::numbers::pi);
+  }
+  const AnalysisResult s = analyze_series(ss, 1000.0);
+  EXPECT_TRUE(s.verdict.stick_slip);
+  EXPECT_EQ(s.verdict.regime, Regime::kStickSlip);
+  EXPECT_NEAR(s.evidence.rest_share, 0.4, 0.01);
+
+  std::vector<double> damped(10000);
+  for (std::size_t i = 0; i < damped.size(); ++i) {
+    const double t = static_cast<double>(i);
+    damped[i] = 0.066 + 0.02 * std::exp(-t / 300.0) * std::cos(0.05 * t);
+  }
+  const AnalysisResult d = analyze_series(damped, 1000.0);
+  EXPECT_EQ(d.verdict.regime, Regime::kSteady);
+  EXPECT_FALSE(d.verdict.stick_slip);
+}
+
+TEST(Regime, TooShortOrNonFiniteSeriesIsAnError) {
+  EXPECT_THROW(analyze_series(white_noise(150), 1000.0), Error);
+  auto x = white_noise(1000);
+  x[17] = std::nan("");
+  EXPECT_THROW(analyze_series(x, 1000.0), Error);
+  const AnalysisResult few = analyze_series(white_noise(500), 1000.0);
+  EXPECT_EQ(few.verdict.regime, Regime::kUndetermined);  // below VerdictOptions::min_samples
+}
+
+}  // namespace
+}  // namespace pneumachaos
