@@ -23,6 +23,7 @@ void add_scenario_options(CLI::App* cmd, ScenarioArgs& args);
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);
 Action add_stability(CLI::App& app);
+Action add_analyze(CLI::App& app);
 
 /// Exit codes shared by all commands.
 inline constexpr int kExitOk = 0;

@@ -22,6 +22,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_simulate);
   add(pneumachaos::cli::add_scenario);
   add(pneumachaos::cli::add_stability);
+  add(pneumachaos::cli::add_analyze);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,61 @@
+// `pneumachaos analyze`: chaos indices and the regime verdict of a recorded series.
+
+#include <fmt/format.h>
+
+#include <optional>
+
+#include "commands.hpp"
+#include "pneumachaos/io/analysis_output.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/csv_reader.hpp"
+
+namespace pneumachaos::cli {
+
+Action add_analyze(CLI::App& app) {
+  struct Args {
+    std::string file;
+    std::string column = "v";
+    std::optional<double> rate_Hz;
+    std::string json;
+    std::string series_out;
+    bool no_wolf = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "analyze",
+      "Chaos indices of a uniformly sampled record (measured or simulated): spectrum, "
+      "autocorrelation, embedding, Lyapunov exponents (divergence curve and Wolf 1985), "
+      "Poincare section, regime verdict");
+  cmd->add_option("file", args->file, "CSV file with a header")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--column", args->column, "column to analyse, by header name (default v)");
+  cmd->add_option("--rate", args->rate_Hz, "sample rate [Hz] when the file has no time column");
+  cmd->add_option("--json", args->json, "write every number with its unit as JSON to this file");
+  cmd->add_option("--series-out", args->series_out,
+                  "directory for the curves as CSV (spectrum, autocorrelation, divergence, "
+                  "Wolf running estimate, embedded trajectory, Poincare points, maxima map)");
+  cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  return [args]() {
+    CsvSeriesOptions input;
+    input.column = args->column;
+    input.rate_Hz = args->rate_Hz;
+    const TimeSeries series = read_csv_series(args->file, input);
+    const Channel& channel = series.channels().front();
+    AnalysisOptions options;
+    options.wolf = !args->no_wolf;
+    const AnalysisResult r = analyze_series(channel.values, series.rate_Hz(), options);
+    fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
+    if (!args->json.empty()) {
+      AtomicFile f(args->json);
+      f.stream() << analysis_json(r, args->file, channel.name, channel.unit) << '\n';
+      f.commit();
+    }
+    if (!args->series_out.empty()) {
+      write_analysis_series(r, channel.values, args->series_out, channel.unit);
+    }
+    return kExitOk;
+  };
+}
+
+}  // namespace pneumachaos::cli

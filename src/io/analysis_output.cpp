@@ -1,0 +1,180 @@
+#include "pneumachaos/io/analysis_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+
+namespace pneumachaos {
+namespace {
+
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+nlohmann::json quantity(double v, const std::string& unit) {
+  return {{"value", number(v)}, {"unit", unit}};
+}
+double bits(double per_s) { return per_s / std::numbers::ln2; }
+
+}  // namespace
+
+std::string analysis_summary(const AnalysisResult& r, const std::string& name,
+                             const std::string& unit) {
+  std::string out =
+      fmt::format("{} samples of {} [{}] at {} Hz ({:.4g} s); mean {:.4g}, std {:.4g}\n", r.samples,
+                  name, unit, r.rate_Hz, r.samples / r.rate_Hz, r.mean, r.standard_deviation);
+  if (r.standard_deviation > 0.0) {
+    out += fmt::format(
+        "spectrum: peak {:.4g} Hz ({:.1f} % of power), broadband share {:.3f}, flatness {:.3f}\n",
+        r.spectrum.peak_frequency_Hz, 100.0 * r.spectrum.peak_share, r.spectrum.broadband_share,
+        r.spectrum.spectral_flatness);
+    out += fmt::format("autocorrelation: first zero {:.4g} s, 1/e {:.4g} s, late envelope {:.3f}\n",
+                       r.acf.first_zero_s, r.acf.one_over_e_s, r.acf.late_envelope);
+    out += fmt::format(
+        "embedding: delay {} samples ({:.4g} s, {}), dimension {} (Cao), Theiler {} samples\n",
+        r.delay.delay, r.delay.delay / r.rate_Hz, r.delay.method, r.dimension.dimension, r.theiler);
+    out += fmt::format("maximum Lyapunov exponent (1/s = nats/s):\n");
+    if (r.divergence.found_linear_region) {
+      out += fmt::format(
+          "  divergence curve: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), fit {:.4g}..{:.4g} s\n",
+          r.divergence.lambda_per_s, r.divergence.uncertainty_per_s,
+          bits(r.divergence.lambda_per_s), r.divergence.fit_first / r.rate_Hz,
+          r.divergence.fit_last / r.rate_Hz);
+    } else {
+      out += "  divergence curve: no rising linear region\n";
+    }
+    if (r.wolf_run) {
+      out +=
+          fmt::format("  Wolf et al. 1985: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), {} replacements\n",
+                      r.wolf.lambda_per_s, r.wolf.uncertainty_per_s, bits(r.wolf.lambda_per_s),
+                      r.wolf.replacements);
+    }
+    out += fmt::format("Poincare section: {} points; successive maxima: {} pairs\n",
+                       r.poincare.points.size(), r.maxima_map.size());
+  }
+  out += fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n", regime_name(r.verdict.regime),
+                     r.verdict.chaotic ? "yes" : "no", r.verdict.stick_slip ? "yes" : "no");
+  for (const auto& line : r.verdict.evidence) out += "  " + line + "\n";
+  return out;
+}
+
+std::string analysis_json(const AnalysisResult& r, const std::string& source,
+                          const std::string& name, const std::string& unit) {
+  nlohmann::json j;
+  j["source"] = source;
+  j["series"] = {{"name", name},
+                 {"unit", unit},
+                 {"samples", r.samples},
+                 {"rate", quantity(r.rate_Hz, "Hz")},
+                 {"mean", quantity(r.mean, unit)},
+                 {"std", quantity(r.standard_deviation, unit)}};
+  j["spectrum"] = {{"peak_frequency", quantity(r.spectrum.peak_frequency_Hz, "Hz")},
+                   {"peak_share", quantity(r.spectrum.peak_share, "-")},
+                   {"broadband_share", quantity(r.spectrum.broadband_share, "-")},
+                   {"flatness", quantity(r.spectrum.spectral_flatness, "-")},
+                   {"resolution", quantity(r.spectrum.resolution_Hz, "Hz")},
+                   {"segments", r.spectrum.segments}};
+  j["autocorrelation"] = {{"first_zero", quantity(r.acf.first_zero_s, "s")},
+                          {"one_over_e", quantity(r.acf.one_over_e_s, "s")},
+                          {"envelope_decay", quantity(r.acf.envelope_decay_per_s, "1/s")},
+                          {"late_envelope", quantity(r.acf.late_envelope, "-")}};
+  j["embedding"] = {{"delay", quantity(r.delay.delay / r.rate_Hz, "s")},
+                    {"delay_samples", r.delay.delay},
+                    {"delay_method", r.delay.method},
+                    {"dimension", r.dimension.dimension},
+                    {"theiler_samples", r.theiler},
+                    {"cao_E1", r.dimension.E1},
+                    {"cao_E2", r.dimension.E2},
+                    {"period", quantity(r.period_samples / r.rate_Hz, "s")}};
+  j["lyapunov"]["divergence"] = {
+      {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
+      {"uncertainty", number(r.divergence.uncertainty_per_s)},
+      {"unit", "1/s"},
+      {"value_bits",
+       r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},
+      {"unit_bits", "bits/s"},
+      {"found_linear_region", r.divergence.found_linear_region},
+      {"fit",
+       {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
+        {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
+      {"aligned_in_time", r.divergence.aligned},
+      {"method", "Rosenstein/Kantz divergence, automatic linear region, jackknife"}};
+  if (r.wolf_run) {
+    j["lyapunov"]["wolf"] = {{"value", number(r.wolf.lambda_per_s)},
+                             {"uncertainty", number(r.wolf.uncertainty_per_s)},
+                             {"unit", "1/s"},
+                             {"value_bits", number(bits(r.wolf.lambda_per_s))},
+                             {"unit_bits", "bits/s"},
+                             {"replacements", r.wolf.replacements},
+                             {"method", "Wolf, Swift, Swinney & Vastano 1985"}};
+  }
+  j["poincare"] = {{"points", r.poincare.points.size()},
+                   {"level", quantity(r.poincare.level, unit)}};
+  j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
+                  {"chaotic", r.verdict.chaotic},
+                  {"stick_slip", r.verdict.stick_slip},
+                  {"evidence", r.verdict.evidence}};
+  return j.dump(2);
+}
+
+void write_analysis_series(const AnalysisResult& r, std::span<const double> x,
+                           const std::string& dir, const std::string& unit) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error(dir, "cannot create the directory: " + ec.message());
+  const auto write = [&](const std::string& file, const std::string& header, auto&& rows) {
+    AtomicFile f(dir + "/" + file);
+    f.stream() << header << '\n';
+    rows(f.stream());
+    f.commit();
+  };
+  const double dt = 1.0 / r.rate_Hz;
+  write("spectrum.csv", fmt::format("f[Hz],psd[({})^2/Hz]", unit), [&](std::ostream& o) {
+    for (std::size_t k = 0; k < r.spectrum.psd.size(); ++k) {
+      o << fmt::format("{},{}\n", r.spectrum.frequency_Hz[k], r.spectrum.psd[k]);
+    }
+  });
+  write("autocorrelation.csv", "lag[s],r[-]", [&](std::ostream& o) {
+    for (std::size_t k = 0; k < r.acf.r.size(); ++k)
+      o << fmt::format("{},{}\n", k * dt, r.acf.r[k]);
+  });
+  write("divergence.csv", "t[s],mean_ln_distance[-],fit[-]", [&](std::ostream& o) {
+    for (std::size_t k = 0; k < r.divergence.curve.size(); ++k) {
+      const bool in = r.divergence.found_linear_region && k >= r.divergence.fit_first &&
+                      k <= r.divergence.fit_last;
+      o << fmt::format(
+          "{},{},{}\n", k * dt, r.divergence.curve[k],
+          in ? fmt::format("{}", r.divergence.intercept + r.divergence.slope_per_step * k)
+             : std::string());
+    }
+  });
+  write("wolf_running.csv", "t[s],lambda[1/s]", [&](std::ostream& o) {
+    for (std::size_t k = 0; k < r.wolf.running_per_s.size(); ++k) {
+      o << fmt::format("{},{}\n", r.wolf.running_time_s[k], r.wolf.running_per_s[k]);
+    }
+  });
+  // The delay-embedded 3-D trajectory of the paper's Fig. 7c.
+  write("embedding.csv", fmt::format("t[s],x_t[{0}],x_t+tau[{0}],x_t+2tau[{0}]", unit),
+        [&](std::ostream& o) {
+          const std::size_t tau = r.delay.delay;
+          for (std::size_t i = 0; i + 2 * tau < x.size(); ++i) {
+            o << fmt::format("{},{},{},{}\n", i * dt, x[i], x[i + tau], x[i + 2 * tau]);
+          }
+        });
+  write("poincare.csv", fmt::format("x_t+tau[{0}],x_t+2tau[{0}],t[s]", unit), [&](std::ostream& o) {
+    for (std::size_t k = 0; k < r.poincare.points.size(); ++k) {
+      o << fmt::format("{},{},{}\n", r.poincare.points[k][0], r.poincare.points[k][1],
+                       r.poincare.time_s[k]);
+    }
+  });
+  write("maxima_map.csv", fmt::format("max_k[{0}],max_k+1[{0}]", unit), [&](std::ostream& o) {
+    for (const auto& p : r.maxima_map) o << fmt::format("{},{}\n", p[0], p[1]);
+  });
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,16 @@
+# cmake -DFILE=out.json -P check_json_keys.cmake: fails unless the analysis JSON has the keys
+# the sweep and report read, each number with its unit.
+file(READ "${FILE}" json)
+foreach(path "lyapunov;wolf;value" "lyapunov;wolf;unit" "lyapunov;divergence;value"
+             "lyapunov;divergence;uncertainty" "lyapunov;divergence;unit" "verdict;regime"
+             "verdict;chaotic" "verdict;stick_slip")
+  string(JSON value ERROR_VARIABLE err GET "${json}" ${path})
+  if(err)
+    message(FATAL_ERROR "missing key ${path}: ${err}")
+  endif()
+endforeach()
+string(JSON unit GET "${json}" lyapunov divergence unit)
+if(NOT unit STREQUAL "1/s")
+  message(FATAL_ERROR "lyapunov.divergence.unit is '${unit}', expected 1/s")
+endif()
+message(STATUS "all keys present")
