@@ -14,6 +14,24 @@ double interpolate_series(std::span<const double> x, double t) {
                    u * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + u * (3.0 * (p1 - p2) + p3 - p0)));
 }
 
+std::span<const double> shifted_series(std::span<const double> x, std::size_t j, double s,
+                                       std::size_t count, std::vector<double>& buffer) {
+  // t = j + s = base + u with 0 <= u < 1; Lagrange weights of the cubic through base-1..base+2.
+  const double t = static_cast<double>(j) + s;
+  const auto base = static_cast<std::size_t>(std::floor(t));
+  const double u = t - static_cast<double>(base);
+  const double w0 = -u * (u - 1.0) * (u - 2.0) / 6.0;
+  const double w1 = (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0;
+  const double w2 = -(u + 1.0) * u * (u - 2.0) / 2.0;
+  const double w3 = (u + 1.0) * u * (u - 1.0) / 6.0;
+  buffer.resize(count);
+  const double* p = x.data() + base - 1;
+  for (std::size_t k = 0; k < count; ++k) {
+    buffer[k] = w0 * p[k] + w1 * p[k + 1] + w2 * p[k + 2] + w3 * p[k + 3];
+  }
+  return buffer;
+}
+
 double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j) {
   double s = 0.0;
   for (int iteration = 0; iteration < 2; ++iteration) {

@@ -42,6 +42,8 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   const std::size_t usable = e.size() - K - margin;
   const NeighbourIndex index(e, usable, repeat_resolution(x));
   const std::size_t max_refs = std::max<std::size_t>(200, o.max_reference_steps / (K + 1));
+  const std::size_t span = K + 1 + (o.dimension - 1) * o.delay;  // samples one pair reads
+  std::vector<double> shifted;
   const std::size_t stride = std::max<std::size_t>(1, usable / max_refs);
   const std::size_t blocks = o.jackknife_blocks;
   // Per block sums of ln d(k) and counts, for the jackknife.
@@ -50,11 +52,18 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   for (std::size_t i = margin; i < usable; i += stride) {
     const Neighbour nb = index.nearest(i, o.theiler);
     if (nb.index >= usable || nb.index < margin) continue;
-    const double s = r.aligned ? closest_offset(e, i, nb.index) : 0.0;
     const std::size_t b = std::min(blocks - 1, (i * blocks) / usable);
+    // The neighbour's series, shifted by its (constant) offset: interpolated once per sample
+    // with fixed weights rather than once per coordinate per step.
+    const std::span<const double> other =
+        r.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
+                  : x.subspan(nb.index, span);
     for (std::size_t k = 0; k <= K; ++k) {
-      const double d2 = r.aligned ? distance2_to(e, i + k, static_cast<double>(nb.index + k) + s)
-                                  : e.distance2(i + k, nb.index + k);
+      double d2 = 0.0;
+      for (std::size_t d = 0; d < e.dimension(); ++d) {
+        const double diff = x[i + k + d * o.delay] - other[k + d * o.delay];
+        d2 += diff * diff;
+      }
       if (d2 > 0.0) {
         sum[b][k] += 0.5 * std::log(d2);
         count[b][k] += 1.0;

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "pneumachaos/analysis/delay_embedding.hpp"
 
@@ -25,6 +26,11 @@ double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j);
 
 /// |y_i - y_{j+s}|^2 with the neighbour at fractional time j + s.
 double distance2_to(const DelayEmbedding& e, std::size_t i, double j_plus_s);
+
+/// x[j + s + k] for k = 0..count-1 (s in [-1, 1]), by cubic interpolation with the weights of
+/// the fixed fractional offset computed once; returns a view of `buffer`.
+std::span<const double> shifted_series(std::span<const double> x, std::size_t j, double s,
+                                       std::size_t count, std::vector<double>& buffer);
 
 /// Whether a record with this delay is treated as an oversampled flow (alignment applies).
 inline bool is_oversampled_flow(std::size_t delay) { return delay >= 3; }

@@ -1,0 +1,62 @@
+// Time of the whole analysis and of each Lyapunov estimator on 1e4 and 1e5 samples of the
+// Lorenz x coordinate (dt = 0.01); the ratio between the sizes shows the growth (N log N
+// would be ~11.5x for 10x the points).
+// Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include "../tests/reference_series.hpp"
+#include "pneumachaos/analysis/analyze.hpp"
+
+namespace {
+
+using namespace pneumachaos;
+
+const std::vector<double>& lorenz(std::size_t n) {
+  static std::map<std::size_t, std::vector<double>> cache;
+  auto it = cache.find(n);
+  if (it == cache.end()) it = cache.emplace(n, testing::lorenz_x(n)).first;
+  return it->second;
+}
+
+void BM_AnalyzeAll(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(analyze_series(x, 100.0).verdict.chaotic);
+}
+
+// The estimators alone, on the embedding the analysis chooses for this record.
+DivergenceOptions embedding_of(const std::vector<double>& x) {
+  AnalysisOptions o;
+  o.wolf = false;
+  const AnalysisResult r = analyze_series(x, 100.0, o);
+  DivergenceOptions d;
+  d.dimension = r.dimension.dimension;
+  d.delay = r.delay.delay;
+  d.theiler = r.theiler;
+  return d;
+}
+
+void BM_Divergence(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  const DivergenceOptions d = embedding_of(x);
+  for (auto _ : state) benchmark::DoNotOptimize(divergence_exponent(x, 100.0, d).lambda_per_s);
+}
+
+void BM_Wolf(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  const DivergenceOptions d = embedding_of(x);
+  WolfOptions w;
+  w.dimension = d.dimension;
+  w.delay = d.delay;
+  w.theiler = d.theiler;
+  for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
+}
+
+BENCHMARK(BM_AnalyzeAll)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Wolf)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
