@@ -8,6 +8,14 @@
 
 namespace pneumachaos {
 
+double FrictionModel::texture_factor(const FrictionInput& in) const {
+  double f = 1.0;
+  for (const TextureMode& m : p_.texture) {
+    f += m.amplitude * std::sin(m.wavenumber_per_m * in.position_m + m.phase);
+  }
+  return f;
+}
+
 double FrictionModel::stribeck_weight(double speed) const {
   const double u = std::abs(speed) / p_.stribeck_velocity_m_per_s;
   const double delta = p_.stribeck_exponent;

@@ -214,6 +214,21 @@ std::vector<KeySpec> build_keys() {
       k, "guide_friction.", "load guide (spring coupling)",
       [](auto& s) -> auto& { return s.load.guide_friction; });
   k.push_back(number(
+      "variation.friction_rel_sd", "-",
+      "relative sd of each friction parameter, drawn per run (sweeps)", 1.0, Range{0.0, 0.5},
+      [](auto& s) -> auto& { return s.variation.friction_rel_sd; }));
+  k.push_back(number(
+      "variation.texture_rel", "-",
+      "relative amplitude of a seeded friction texture along the bore", 1.0, Range{0.0, 0.5},
+      [](auto& s) -> auto& { return s.variation.texture_rel; }));
+  k.push_back(number(
+      "variation.texture_wavelength_mm", "mm", "typical wavelength of the texture", 1e-3, kPositive,
+      [](auto& s) -> auto& { return s.variation.texture_wavelength_m; }));
+  k.push_back(number(
+      "variation.sensor_noise_mm_per_s", "mm/s",
+      "sd of white noise on the sampled velocity (a transducer)", 1e-3, kNonNegative,
+      [](auto& s) -> auto& { return s.variation.sensor_noise_m_per_s; }));
+  k.push_back(number(
       "run.duration_s", "s", "simulated time (the run also ends at stroke end)", 1.0, kPositive,
       [](auto& s) -> auto& { return s.run.duration_s; }));
   k.push_back(number(

@@ -4,10 +4,19 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace pneumachaos {
 
 enum class FrictionKind { kClassic, kStribeck, kLuGre };
+
+/// One sinusoidal component of a friction texture along the bore: the friction levels are
+/// multiplied by 1 + sum(amplitude * sin(wavenumber * x + phase)).
+struct TextureMode {
+  double amplitude = 0.0;  ///< relative
+  double wavenumber_per_m = 0.0;
+  double phase = 0.0;
+};
 
 /// Parameters shared by all friction models; each model reads the ones it needs.
 /// Forces in N, velocities in m/s, pressures in Pa.
@@ -23,6 +32,8 @@ struct FrictionParams {
   /// Pressure dependence (MODEL.md item 4): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
   double coulomb_gain_N_per_Pa = 0.0;
   double static_gain_N_per_Pa = 0.0;
+  /// Position-dependent texture (MODEL.md item 5); empty: uniform bore.
+  std::vector<TextureMode> texture;
 };
 
 /// What a friction model sees of the plant.
@@ -77,11 +88,12 @@ class FrictionModel {
 
  protected:
   [[nodiscard]] double coulomb_N(const FrictionInput& in) const {
-    return p_.coulomb_N + p_.coulomb_gain_N_per_Pa * in.gauge_sum_Pa;
+    return (p_.coulomb_N + p_.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(in);
   }
   [[nodiscard]] double static_N(const FrictionInput& in) const {
-    return p_.static_N + p_.static_gain_N_per_Pa * in.gauge_sum_Pa;
+    return (p_.static_N + p_.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(in);
   }
+  [[nodiscard]] double texture_factor(const FrictionInput& in) const;
   /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
   [[nodiscard]] double stribeck_level_N(const FrictionInput& in, double speed) const;
   /// dg/d|v| and dg/dp of the Stribeck curve at |v| = speed.

@@ -38,7 +38,16 @@ struct LoadParams {
   double coupling_stiffness_N_per_m = 8.0e3;
   double coupling_damping_Ns_per_m = 7.0;
   FrictionParams guide_friction{
-      FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0, 1.0e5, 50.0, 0.0, 0.0};
+      FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0, 1.0e5, 50.0, 0.0, 0.0, {}};
+};
+
+/// Run-to-run and seal-to-seal variation (MODEL.md item 5): what makes repeated runs of a
+/// virtual rig differ as the paper's five measurements per point did. All zero: no variation.
+struct VariationParams {
+  double friction_rel_sd = 0.0;  ///< relative sd of Fc, Fs, B, vs, sigma0, sigma1 per run
+  double texture_rel = 0.0;      ///< relative amplitude of the friction texture along the bore
+  double texture_wavelength_m = 0.02;  ///< typical wavelength of the texture
+  double sensor_noise_m_per_s = 0.0;   ///< sd of white noise added to the sampled velocity
 };
 
 struct RunParams {
@@ -61,6 +70,7 @@ struct Scenario {
   ValveLaw valve;
   FrictionParams friction;
   LoadParams load;
+  VariationParams variation;
   RunParams run;
 
   [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }

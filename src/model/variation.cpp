@@ -1,0 +1,59 @@
+#include "pneumachaos/model/variation.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace pneumachaos {
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+void vary_friction(FrictionParams& f, const VariationParams& v, std::mt19937_64& rng) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  if (v.friction_rel_sd > 0.0) {
+    const auto scale = [&](double& p) {
+      p *= std::max(0.2, 1.0 + v.friction_rel_sd * normal(rng));
+    };
+    for (double* p : {&f.coulomb_N, &f.static_N, &f.viscous_Ns_per_m, &f.stribeck_velocity_m_per_s,
+                      &f.sigma0_N_per_m, &f.sigma1_Ns_per_m}) {
+      scale(*p);
+    }
+    f.static_N = std::max(f.static_N, f.coulomb_N);
+  }
+  if (v.texture_rel > 0.0) {
+    f.texture.clear();
+    // Four modes, wavelengths spread over half to twice the typical one; amplitudes share
+    // the texture's variance.
+    for (int i = 0; i < 4; ++i) {
+      const double wavelength = v.texture_wavelength_m * std::pow(2.0, 2.0 * uniform(rng) - 1.0);
+      f.texture.push_back({0.5 * v.texture_rel * normal(rng), 2.0 * std::numbers::pi / wavelength,
+                           2.0 * std::numbers::pi * uniform(rng)});
+    }
+  }
+}
+
+}  // namespace
+
+std::uint64_t run_seed(std::uint64_t seed, std::uint64_t point, std::uint64_t repeat) {
+  return splitmix64(splitmix64(splitmix64(seed) ^ point) ^ repeat);
+}
+
+Scenario vary(const Scenario& base, std::uint64_t seed) {
+  Scenario s = base;
+  std::mt19937_64 rng(splitmix64(seed ^ 0x5eed0001ULL));
+  vary_friction(s.friction, s.variation, rng);
+  vary_friction(s.load.guide_friction, s.variation, rng);
+  return s;
+}
+
+std::mt19937_64 noise_stream(std::uint64_t seed) {
+  return std::mt19937_64(splitmix64(seed ^ 0x5eed0002ULL));
+}
+
+}  // namespace pneumachaos
