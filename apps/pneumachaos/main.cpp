@@ -23,6 +23,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_scenario);
   add(pneumachaos::cli::add_stability);
   add(pneumachaos::cli::add_analyze);
+  add(pneumachaos::cli::add_sweep);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

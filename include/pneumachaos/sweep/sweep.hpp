@@ -1,0 +1,76 @@
+#pragma once
+// Sweeps (paper Figs. 4-6): repeated runs over a grid of scenario parameters, each run
+// simulated and then judged by the analysis exactly as a measured record would be.
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "pneumachaos/model/parameter_grid.hpp"
+#include "pneumachaos/model/scenario.hpp"
+
+namespace pneumachaos {
+
+struct SweepSpec {
+  Scenario base;
+  std::vector<GridAxis> axes;  ///< default: the paper's S1 x S2 grid
+  std::size_t repeats = 5;
+  std::uint64_t seed = 1;
+  bool wolf = false;  ///< also run Wolf's estimator per run (slower; the verdict does not use it)
+  void validate() const;
+  [[nodiscard]] std::size_t points() const { return grid_size(axes); }
+  [[nodiscard]] std::size_t runs() const { return points() * repeats; }
+  /// Identifies the spec: a resume with another spec is refused.
+  [[nodiscard]] std::string fingerprint() const;
+};
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// One finished run, as stored (no wall times: result files are identical on every machine).
+struct RunRecord {
+  std::size_t point = 0, repeat = 0;
+  std::uint64_t seed = 0;
+  bool ok = true;      ///< false: the run failed (invalid parameters, solver failure)
+  std::string reason;  ///< why it failed, or why the analysis could not judge it
+  std::string termination;
+  double t_final_s = kNaN;
+  std::size_t steps = 0, sticks = 0;
+  double mean_v = kNaN, std_v = kNaN;                            ///< [m/s]
+  double lambda = kNaN, lambda_uncertainty = kNaN, wolf = kNaN;  ///< [1/s]
+  double broadband = kNaN, late_acf = kNaN;
+  std::string regime = "undetermined";
+  bool chaotic = false, stick_slip = false;
+
+  [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
+  [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
+  static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
+  static std::string csv_header();
+};
+
+/// Simulates and analyses run `repeat` of grid point `point`. Never throws for a bad point or
+/// a failed run: that is a record with ok = false and the reason.
+RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat);
+
+struct PointSummary {
+  std::size_t point = 0;
+  std::vector<double> coordinates;
+  std::size_t runs = 0, failed = 0;
+  double stick_slip_incidence = 0.0;  ///< fraction of the successful runs
+  double chaos_incidence = 0.0;
+  double mean_v = kNaN, mean_lambda = kNaN;
+};
+
+struct SweepSummary {
+  std::size_t runs = 0, failed = 0, points = 0;
+  std::size_t stick_slip_points = 0;  ///< points with stick-slip in at least half of the runs
+  std::size_t chaos_full_points = 0;  ///< points chaotic in every run (the paper's black)
+  std::size_t chaos_any_points = 0;   ///< points chaotic in at least one run
+  std::vector<PointSummary> per_point;
+};
+
+/// Incidence per point and the map's region areas, from records sorted by (point, repeat).
+SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records);
+
+}  // namespace pneumachaos

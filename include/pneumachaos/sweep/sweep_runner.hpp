@@ -1,0 +1,25 @@
+#pragma once
+// Running a sweep into a directory that survives interruption: every finished run is appended
+// to a journal and synced to disk; `resume` skips what the journal holds; the result files
+// are written from the journal, sorted, so they do not depend on threads, order or resumes.
+
+#include <string>
+
+#include "pneumachaos/sweep/sweep.hpp"
+
+namespace pneumachaos {
+
+struct SweepOptions {
+  std::string out_dir;
+  bool resume = false;
+  std::size_t threads = 0;  ///< 0: all hardware threads
+  bool progress = true;     ///< shown only when standard error is a terminal
+  void validate() const;
+};
+
+/// Runs the sweep (or its remainder) and writes runs.csv, points.csv and summary.json into
+/// out_dir. Throws Error for a directory that already holds a different sweep, or one that
+/// holds this sweep without `resume`.
+SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options);
+
+}  // namespace pneumachaos

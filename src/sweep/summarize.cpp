@@ -1,0 +1,55 @@
+#include <cmath>
+
+#include "pneumachaos/sweep/sweep.hpp"
+
+namespace pneumachaos {
+
+SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records) {
+  SweepSummary s;
+  s.points = spec.points();
+  s.runs = records.size();
+  s.per_point.resize(s.points);
+  std::vector<std::size_t> lambda_count(s.points, 0);
+  for (std::size_t p = 0; p < s.points; ++p) {
+    PointSummary& ps = s.per_point[p];
+    ps.point = p;
+    const auto index = grid_index(spec.axes, p);
+    for (std::size_t a = 0; a < spec.axes.size(); ++a)
+      ps.coordinates.push_back(spec.axes[a].values[index[a]]);
+    ps.mean_v = 0.0;
+    ps.mean_lambda = 0.0;
+  }
+  for (const RunRecord& r : records) {
+    PointSummary& ps = s.per_point.at(r.point);
+    ++ps.runs;
+    if (!r.ok) {
+      ++ps.failed;
+      ++s.failed;
+      continue;
+    }
+    ps.stick_slip_incidence += r.stick_slip ? 1.0 : 0.0;
+    ps.chaos_incidence += r.chaotic ? 1.0 : 0.0;
+    ps.mean_v += r.mean_v;
+    if (std::isfinite(r.lambda)) {
+      ps.mean_lambda += r.lambda;
+      ++lambda_count[r.point];
+    }
+  }
+  for (PointSummary& ps : s.per_point) {
+    const double ok = static_cast<double>(ps.runs - ps.failed);
+    if (ok > 0) {
+      ps.stick_slip_incidence /= ok;
+      ps.chaos_incidence /= ok;
+      ps.mean_v /= ok;
+    } else {
+      ps.mean_v = kNaN;
+    }
+    ps.mean_lambda = lambda_count[ps.point] > 0 ? ps.mean_lambda / lambda_count[ps.point] : kNaN;
+    if (ok > 0 && ps.stick_slip_incidence >= 0.5) ++s.stick_slip_points;
+    if (ok > 0 && ps.chaos_incidence >= 1.0) ++s.chaos_full_points;
+    if (ok > 0 && ps.chaos_incidence > 0.0) ++s.chaos_any_points;
+  }
+  return s;
+}
+
+}  // namespace pneumachaos

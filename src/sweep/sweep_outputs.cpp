@@ -1,0 +1,56 @@
+#include "sweep_outputs.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "pneumachaos/io/atomic_file.hpp"
+
+namespace pneumachaos::detail {
+
+void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& records,
+                         const SweepSummary& summary, const std::string& dir) {
+  std::string axes_header;
+  for (const auto& a : spec.axes) axes_header += a.key + ",";
+  {
+    AtomicFile f(dir + "/runs.csv");
+    f.stream() << axes_header << RunRecord::csv_header() << '\n';
+    for (const RunRecord& r : records) {
+      for (double c : summary.per_point[r.point].coordinates) f.stream() << fmt::format("{},", c);
+      f.stream() << r.encode() << '\n';
+    }
+    f.commit();
+  }
+  {
+    AtomicFile f(dir + "/points.csv");
+    f.stream() << "point," << axes_header
+               << "runs,failed,stick_slip_incidence,chaos_incidence,mean_v_m_per_s,"
+                  "mean_lambda_per_s\n";
+    for (const PointSummary& p : summary.per_point) {
+      f.stream() << p.point << ',';
+      for (double c : p.coordinates) f.stream() << fmt::format("{},", c);
+      f.stream() << fmt::format("{},{},{},{},{},{}\n", p.runs, p.failed, p.stick_slip_incidence,
+                                p.chaos_incidence, p.mean_v, p.mean_lambda);
+    }
+    f.commit();
+  }
+  nlohmann::json j;
+  j["spec"] = {{"fingerprint", spec.fingerprint()},
+               {"repeats", spec.repeats},
+               {"seed", spec.seed},
+               {"wolf", spec.wolf}};
+  for (const auto& a : spec.axes) j["spec"]["grid"][a.key] = a.values;
+  j["runs"] = summary.runs;
+  j["failed_runs"] = summary.failed;
+  j["points"] = summary.points;
+  j["regions"] = {{"stick_slip_points", summary.stick_slip_points},
+                  {"stick_slip_rule", "stick-slip in at least half of a point's successful runs"},
+                  {"chaos_full_points", summary.chaos_full_points},
+                  {"chaos_full_rule", "chaotic in every successful run (the paper's black)"},
+                  {"chaos_any_points", summary.chaos_any_points}};
+  AtomicFile f(dir + "/summary.json");
+  f.stream() << j.dump(2) << '\n';
+  f.commit();
+}
+
+}  // namespace pneumachaos::detail

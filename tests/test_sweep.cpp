@@ -1,0 +1,151 @@
+// Sweeps: incidence arithmetic, reproducible repeats, determinism across threads, journal.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
+
+namespace pneumachaos {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("pneumachaos_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+SweepSpec small_spec(std::vector<std::string> sets = {}) {
+  SweepSpec spec;
+  sets.push_back("run.duration_s=2");
+  spec.base = build_scenario("", sets);
+  spec.axes = {parse_grid_axis("circuit.S2_mm2=0.05:0.35:0.15")};
+  spec.repeats = 2;
+  return spec;
+}
+
+TEST(Sweep, IncidenceArithmeticOnKnownVerdicts) {
+  SweepSpec spec;
+  spec.base = default_scenario();
+  spec.axes = {parse_grid_axis("circuit.S2_mm2=1:3:1")};
+  spec.repeats = 4;
+  std::vector<RunRecord> records;
+  // Point 0: all stick-slip; point 1: 3 of 4 chaotic, 1 failed; point 2: chaotic in all.
+  for (std::size_t p = 0; p < 3; ++p) {
+    for (std::size_t r = 0; r < 4; ++r) {
+      RunRecord rec;
+      rec.point = p;
+      rec.repeat = r;
+      rec.mean_v = 0.01 * (p + 1);
+      rec.stick_slip = p == 0;
+      rec.chaotic = p == 2 || (p == 1 && r < 3);
+      if (p == 1 && r == 3) rec.ok = false;
+      records.push_back(rec);
+    }
+  }
+  const SweepSummary s = summarize(spec, records);
+  EXPECT_EQ(s.runs, 12u);
+  EXPECT_EQ(s.failed, 1u);
+  EXPECT_DOUBLE_EQ(s.per_point[0].stick_slip_incidence, 1.0);
+  EXPECT_DOUBLE_EQ(s.per_point[1].chaos_incidence, 1.0);  // 3 of the 3 successful runs
+  EXPECT_EQ(s.per_point[1].failed, 1u);
+  EXPECT_DOUBLE_EQ(s.per_point[2].chaos_incidence, 1.0);
+  EXPECT_EQ(s.stick_slip_points, 1u);
+  EXPECT_EQ(s.chaos_full_points, 2u);
+  EXPECT_EQ(s.chaos_any_points, 2u);
+  EXPECT_DOUBLE_EQ(s.per_point[2].coordinates[0], 3.0);
+}
+
+TEST(Sweep, ZeroVariationGivesIdenticalRepeats) {
+  const SweepSpec spec = small_spec();
+  RunRecord a = run_one(spec, 0, 0), b = run_one(spec, 0, 1);
+  EXPECT_NE(a.seed, b.seed);
+  b.repeat = a.repeat;
+  b.seed = a.seed;
+  EXPECT_EQ(a.encode(), b.encode());
+}
+
+TEST(Sweep, VariationGivesDifferentReproducibleRepeats) {
+  const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.1", "variation.texture_rel=0.05",
+                                     "variation.sensor_noise_mm_per_s=0.5"});
+  const RunRecord a = run_one(spec, 1, 0), b = run_one(spec, 1, 1);
+  EXPECT_NE(a.mean_v, b.mean_v);
+  EXPECT_EQ(a.encode(), run_one(spec, 1, 0).encode());
+}
+
+TEST(Sweep, ResultsDoNotDependOnTheThreadCount) {
+  const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.05"});
+  const std::string one = temp_dir("t1"), two = temp_dir("t2");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = one;
+  o.threads = 1;
+  run_sweep(spec, o);
+  o.out_dir = two;
+  o.threads = 2;
+  run_sweep(spec, o);
+  for (const char* f : {"/runs.csv", "/points.csv", "/summary.json"}) {
+    EXPECT_EQ(slurp(one + f), slurp(two + f)) << f;
+    EXPECT_FALSE(slurp(one + f).empty());
+  }
+  std::filesystem::remove_all(one);
+  std::filesystem::remove_all(two);
+}
+
+TEST(Sweep, ResumeSkipsFinishedRunsCutsATornLineAndRefusesAnotherSpec) {
+  const SweepSpec spec = small_spec();
+  const std::string full = temp_dir("full"), part = temp_dir("part");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = full;
+  run_sweep(spec, o);
+  // A journal with the header, two finished runs and a torn third line, as a kill leaves it.
+  const std::string journal = slurp(full + "/journal.csv");
+  std::size_t cut = 0;
+  for (int lines = 0; lines < 3; ++lines) cut = journal.find('\n', cut) + 1;
+  std::filesystem::create_directories(part);
+  std::ofstream(part + "/journal.csv", std::ios::binary)
+      << journal.substr(0, cut) << "1,0,123,1,dur";
+  o.out_dir = part;
+  EXPECT_THROW(run_sweep(spec, o), Error);  // an existing sweep without --resume
+  o.resume = true;
+  const SweepSummary s = run_sweep(spec, o);
+  EXPECT_EQ(s.runs, spec.runs());
+  for (const char* f : {"/runs.csv", "/points.csv", "/summary.json"}) {
+    EXPECT_EQ(slurp(full + f), slurp(part + f)) << f;
+  }
+  SweepSpec other = spec;
+  other.seed = 2;
+  EXPECT_THROW(run_sweep(other, o), Error);
+  std::filesystem::remove_all(full);
+  std::filesystem::remove_all(part);
+}
+
+TEST(Sweep, AFailedRunIsRecordedAndTheSweepGoesOn) {
+  SweepSpec spec = small_spec();
+  spec.axes = {parse_grid_axis("cylinder.rod_mm=30:50:10")};  // 40 and 50 mm are not < bore
+  const std::string dir = temp_dir("fail");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = dir;
+  const SweepSummary s = run_sweep(spec, o);
+  EXPECT_EQ(s.runs, 6u);
+  EXPECT_EQ(s.failed, 4u);
+  EXPECT_NE(slurp(dir + "/runs.csv").find("must be smaller than the bore"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pneumachaos
