@@ -80,6 +80,13 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   r.period_samples = mean_maxima_spacing(x);
   r.spectrum = welch_spectrum(x, rate_Hz, o.spectrum);
   r.acf = autocorrelation(x, rate_Hz);
+  e.broadband_share = r.spectrum.broadband_share;
+  e.late_acf = r.acf.late_envelope;
+  if (is_steady(e, o.verdict)) {
+    // Damped to a constant: nothing to embed; the exponents are not computed.
+    r.verdict = decide_regime(e, o.verdict);
+    return r;
+  }
   r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
   const std::size_t tau = r.delay.delay;
   const std::size_t zero_lag =
@@ -110,8 +117,6 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   e.lyapunov_found = r.divergence.found_linear_region;
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
-  e.broadband_share = r.spectrum.broadband_share;
-  e.late_acf = r.acf.late_envelope;
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
   r.verdict = decide_regime(e, o.verdict);
   return r;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <nanoflann.hpp>
+#include <numeric>
+#include <string>
 
 #include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -37,14 +39,53 @@ double DelayEmbedding::distance2(std::size_t i, std::size_t j) const {
 
 namespace {
 
+// Distinct delay vectors and the times at which each occurs. Records that rest (a stuck
+// piston's v = 0) or are quantised repeat one vector thousands of times; the tree holds each
+// distinct vector once, so a query does not wade through its repeats.
+struct Groups {
+  std::vector<std::size_t> representative;  ///< tree point k -> first index of its vector
+  std::vector<std::size_t> start;           ///< members of k: member[start[k] .. start[k+1])
+  std::vector<std::size_t> member;          ///< ascending indices within each group
+
+  Groups(const DelayEmbedding& e, std::size_t points) {
+    std::vector<std::size_t> order(points);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto less = [&](std::size_t a, std::size_t b) {
+      for (std::size_t d = 0; d < e.dimension(); ++d) {
+        const double ca = e.coordinate(a, d), cb = e.coordinate(b, d);
+        if (ca != cb) return ca < cb;
+      }
+      return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    for (std::size_t n = 0; n < order.size(); ++n) {
+      if (n == 0 || e.distance2(order[n - 1], order[n]) != 0.0) {
+        start.push_back(member.size());
+        representative.push_back(order[n]);
+      }
+      member.push_back(order[n]);
+    }
+    start.push_back(member.size());
+  }
+
+  // The first occurrence of tree point k outside query i's Theiler window, or npos.
+  [[nodiscard]] std::size_t resolve(std::size_t k, std::size_t i, std::size_t theiler) const {
+    const auto first = member.begin() + static_cast<std::ptrdiff_t>(start[k]);
+    const auto last = member.begin() + static_cast<std::ptrdiff_t>(start[k + 1]);
+    if (*first + theiler < i) return *first;
+    const auto after = std::upper_bound(first, last, i + theiler);
+    return after == last ? std::string::npos : *after;
+  }
+};
+
 // nanoflann's dataset adaptor: the coordinates are read from the series on demand, so the
 // embedded vectors are never materialised.
 struct Adaptor {
   const DelayEmbedding* e;
-  std::size_t points;
-  [[nodiscard]] std::size_t kdtree_get_point_count() const { return points; }
-  [[nodiscard]] double kdtree_get_pt(std::size_t i, std::size_t d) const {
-    return e->coordinate(i, d);
+  const Groups* groups;
+  [[nodiscard]] std::size_t kdtree_get_point_count() const { return groups->representative.size(); }
+  [[nodiscard]] double kdtree_get_pt(std::size_t k, std::size_t d) const {
+    return e->coordinate(groups->representative[k], d);
   }
   template <class Box>
   bool kdtree_get_bbox(Box&) const {
@@ -55,18 +96,20 @@ struct Adaptor {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
                                                  Adaptor, -1, std::size_t>;
 
-// Result sets in nanoflann's protocol that drop the query's temporal neighbours and exact
-// repeats while the tree is searched, so no over-fetching is needed.
+// Result sets in nanoflann's protocol that drop the query's own repeats and temporal
+// neighbours while the tree is searched, so no over-fetching is needed.
 class ExcludingKnn {
  public:
-  ExcludingKnn(std::size_t query, std::size_t theiler, std::size_t k, double min_d2)
-      : query_(query), theiler_(theiler), k_(k), min_d2_(min_d2) {}
+  ExcludingKnn(const Groups& g, std::size_t query, std::size_t theiler, std::size_t k,
+               double min_d2)
+      : g_(g), query_(query), theiler_(theiler), k_(k), min_d2_(min_d2) {}
   [[nodiscard]] std::size_t size() const { return found_.size(); }
   [[nodiscard]] bool full() const { return found_.size() == k_; }
-  bool addPoint(double d2, std::size_t j) {
-    const std::size_t gap = j > query_ ? j - query_ : query_ - j;
-    if (gap <= theiler_ || d2 <= min_d2_) return true;
+  bool addPoint(double d2, std::size_t k) {
+    if (d2 <= min_d2_) return true;
     if (full() && d2 >= found_.back().distance2) return true;
+    const std::size_t j = g_.resolve(k, query_, theiler_);
+    if (j == std::string::npos) return true;
     auto pos = std::upper_bound(found_.begin(), found_.end(), d2,
                                 [](double v, const Neighbour& n) { return v < n.distance2; });
     found_.insert(pos, Neighbour{j, d2});
@@ -79,6 +122,7 @@ class ExcludingKnn {
   std::vector<Neighbour> take() { return std::move(found_); }
 
  private:
+  const Groups& g_;
   std::size_t query_, theiler_, k_;
   double min_d2_;
   std::vector<Neighbour> found_;
@@ -86,19 +130,21 @@ class ExcludingKnn {
 
 class ExcludingRadius {
  public:
-  ExcludingRadius(std::size_t query, std::size_t theiler, double r2, double min_d2)
-      : query_(query), theiler_(theiler), r2_(r2), min_d2_(min_d2) {}
+  ExcludingRadius(const Groups& g, std::size_t query, std::size_t theiler, double r2, double min_d2)
+      : g_(g), query_(query), theiler_(theiler), r2_(r2), min_d2_(min_d2) {}
   [[nodiscard]] std::size_t size() const { return found_.size(); }
   [[nodiscard]] bool full() const { return true; }
-  bool addPoint(double d2, std::size_t j) {
-    const std::size_t gap = j > query_ ? j - query_ : query_ - j;
-    if (d2 < r2_ && gap > theiler_ && d2 > min_d2_) found_.push_back({j, d2});
+  bool addPoint(double d2, std::size_t k) {
+    if (d2 >= r2_ || d2 <= min_d2_) return true;
+    const std::size_t j = g_.resolve(k, query_, theiler_);
+    if (j != std::string::npos) found_.push_back({j, d2});
     return true;
   }
   [[nodiscard]] double worstDist() const { return r2_; }
   std::vector<Neighbour> take() { return std::move(found_); }
 
  private:
+  const Groups& g_;
   std::size_t query_, theiler_;
   double r2_, min_d2_;
   std::vector<Neighbour> found_;
@@ -108,13 +154,17 @@ class ExcludingRadius {
 
 struct NeighbourIndex::Impl {
   const DelayEmbedding* embedding;
+  std::size_t points;
+  Groups groups;
   Adaptor adaptor;
   Tree tree;
   std::vector<double> query;
   double min_d2;
-  Impl(const DelayEmbedding& e, std::size_t points, double resolution)
+  Impl(const DelayEmbedding& e, std::size_t n, double resolution)
       : embedding(&e),
-        adaptor{&e, points},
+        points(n),
+        groups(e, n),
+        adaptor{&e, &groups},
         tree(static_cast<int>(e.dimension()), adaptor,
              nanoflann::KDTreeSingleIndexAdaptorParams(16)),
         query(e.dimension()),
@@ -136,11 +186,11 @@ NeighbourIndex::NeighbourIndex(const DelayEmbedding& embedding, std::size_t poin
 double repeat_resolution(std::span<const double> x) { return 1e-9 * standard_deviation(x); }
 NeighbourIndex::~NeighbourIndex() = default;
 
-std::size_t NeighbourIndex::size() const { return impl_->adaptor.points; }
+std::size_t NeighbourIndex::size() const { return impl_->points; }
 
 std::vector<Neighbour> NeighbourIndex::k_nearest(std::size_t i, std::size_t k,
                                                  std::size_t theiler) const {
-  ExcludingKnn result(i, theiler, k, impl_->min_d2);
+  ExcludingKnn result(impl_->groups, i, theiler, k, impl_->min_d2);
   impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
   return result.take();
 }
@@ -151,7 +201,7 @@ Neighbour NeighbourIndex::nearest(std::size_t i, std::size_t theiler) const {
 }
 
 std::vector<Neighbour> NeighbourIndex::within(std::size_t i, double r, std::size_t theiler) const {
-  ExcludingRadius result(i, theiler, r * r, impl_->min_d2);
+  ExcludingRadius result(impl_->groups, i, theiler, r * r, impl_->min_d2);
   impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
   return result.take();
 }

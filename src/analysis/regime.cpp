@@ -23,6 +23,10 @@ const char* regime_name(Regime r) {
   return "?";
 }
 
+bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
+  return e.last_half_std <= o.steady_variation * std::max(std::abs(e.last_half_mean), e.range);
+}
+
 Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   Verdict v;
   const auto note = [&](bool ok, const std::string& text) {
@@ -41,9 +45,9 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
                        e.rest_intervals, o.min_rest_samples, o.rest_fraction, o.min_rest_intervals,
                        100.0 * e.rest_share, 100.0 * o.min_rest_share));
   const double scale = std::max(std::abs(e.last_half_mean), e.range);
-  const bool steady = note(e.last_half_std <= o.steady_variation * scale,
-                           fmt::format("steady: std of the last half {:.4g} <= {} x {:.4g}",
-                                       e.last_half_std, o.steady_variation, scale));
+  const bool steady =
+      note(is_steady(e, o), fmt::format("steady: std of the last half {:.4g} <= {} x {:.4g}",
+                                        e.last_half_std, o.steady_variation, scale));
   const bool positive = note(
       e.lyapunov_found && e.lyapunov_per_s > o.lyapunov_sigmas * e.lyapunov_uncertainty_per_s &&
           e.lyapunov_per_s > 0.0,

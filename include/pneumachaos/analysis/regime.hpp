@@ -60,4 +60,8 @@ struct Verdict {
 
 Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o = {});
 
+/// The steady criterion alone: a record damped to a constant has no dynamics to embed, so the
+/// analysis stops before the embedding and the Lyapunov estimators.
+bool is_steady(const RegimeEvidence& e, const VerdictOptions& o = {});
+
 }  // namespace pneumachaos
