@@ -46,6 +46,7 @@ Action add_sweep(CLI::App& app) {
     options.resume = args->resume;
     options.threads = args->threads;
     const SweepSummary s = run_sweep(spec, options);
+    if (!s.wrote_files) return kExitOk;  // another MPI rank reports
     fmt::print(
         "sweep: {} points x {} repeats = {} runs ({} failed); stick-slip region {} points, "
         "100 %-chaos region {} points, chaos anywhere {} points; results in {}\n",

@@ -7,12 +7,14 @@
 
 #include "commands.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace {
 
 int run(int argc, char** argv) {
   CLI::App app{"pneumachaos: stick-slip and chaotic oscillation of pneumatic cylinders"};
-  app.set_version_flag("--version", std::string("pneumachaos ") + PNEUMACHAOS_VERSION);
+  app.set_version_flag("--version", std::string("pneumachaos ") + PNEUMACHAOS_VERSION +
+                                        (pneumachaos::sweeps_support_mpi() ? " (MPI)" : ""));
   app.require_subcommand(1);
   std::map<CLI::App*, pneumachaos::cli::Action> actions;
   const auto add = [&](pneumachaos::cli::Action (*f)(CLI::App&)) {

@@ -11,9 +11,15 @@ namespace pneumachaos::detail {
 
 class Journal {
  public:
-  /// Opens (creating if needed) path for appending. An existing journal must carry the same
-  /// fingerprint; a torn last line (the process killed mid-write) is cut off.
-  Journal(const std::string& path, const std::string& fingerprint, bool resume);
+  /// Opens (creating if needed) this process's journal `own_name` in dir for appending, after
+  /// reading every journal*.csv there (other ranks' too). Each must carry the same
+  /// fingerprint; a torn last line (a process killed mid-write) is ignored, and cut off in
+  /// the own journal.
+  Journal(const std::string& dir, const std::string& own_name, const std::string& fingerprint,
+          bool resume);
+
+  /// Every record in the directory's journals (all ranks), read now.
+  static std::vector<RunRecord> read_all(const std::string& dir, const std::string& fingerprint);
   ~Journal();
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;

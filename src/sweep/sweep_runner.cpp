@@ -10,11 +10,14 @@
 #include <mutex>
 #include <thread>
 
+#include "distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "sweep_outputs.hpp"
 
 namespace pneumachaos {
+
+bool sweeps_support_mpi() { return detail::Distribution::built_with_mpi(); }
 
 void SweepOptions::validate() const {
   if (out_dir.empty()) throw Error("--out", "a directory for the results is required");
@@ -26,7 +29,13 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec) throw Error(options.out_dir, "cannot create the directory: " + ec.message());
-  detail::Journal journal(options.out_dir + "/journal.csv", spec.fingerprint(), options.resume);
+  detail::Distribution& dist = detail::Distribution::instance();
+  const std::string own =
+      dist.size() == 1 ? "journal.csv" : fmt::format("journal.rank{}.csv", dist.rank());
+  // Every rank reads the journals before any rank appends to them.
+  dist.barrier();
+  detail::Journal journal(options.out_dir, own, spec.fingerprint(), options.resume);
+  dist.barrier();
 
   const std::size_t total = spec.runs();
   std::vector<char> done(total, 0);
@@ -41,12 +50,18 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   }
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < total; ++i) {
-    if (!done[i]) pending.push_back(i);
+    // Under MPI each rank takes the runs whose index matches its rank.
+    if (!done[i] &&
+        i % static_cast<std::size_t>(dist.size()) == static_cast<std::size_t>(dist.rank())) {
+      pending.push_back(i);
+    }
   }
 
-  const std::size_t threads = std::max<std::size_t>(
-      1, std::min(options.threads > 0 ? options.threads : std::thread::hardware_concurrency(),
-                  std::max<std::size_t>(pending.size(), 1)));
+  const std::size_t hardware = std::max<std::size_t>(
+      1, std::thread::hardware_concurrency() / static_cast<std::size_t>(dist.size()));
+  const std::size_t threads =
+      std::max<std::size_t>(1, std::min(options.threads > 0 ? options.threads : hardware,
+                                        std::max<std::size_t>(pending.size(), 1)));
   std::atomic<std::size_t> next{0};
   std::mutex mutex;
   std::size_t finished = 0;
@@ -85,12 +100,28 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   for (auto& t : pool) t.join();
   if (show) fmt::print(stderr, "\n");
   if (failure) std::rethrow_exception(failure);
+  if (dist.size() > 1) {
+    // Every rank's runs are in its journal once all have arrived here; rank 0 writes.
+    dist.barrier();
+    records.clear();
+    std::vector<char> seen(total, 0);
+    for (RunRecord& r : detail::Journal::read_all(options.out_dir, spec.fingerprint())) {
+      const std::size_t i = r.index(spec.repeats);
+      if (i < total && !seen[i]) {
+        seen[i] = 1;
+        records.push_back(std::move(r));
+      }
+    }
+    if (records.size() != total) throw Error(options.out_dir, "the ranks' journals are incomplete");
+  }
 
   std::sort(records.begin(), records.end(), [&](const RunRecord& a, const RunRecord& b) {
     return a.index(spec.repeats) < b.index(spec.repeats);
   });
-  const SweepSummary summary = summarize(spec, records);
-  detail::write_sweep_outputs(spec, records, summary, options.out_dir);
+  SweepSummary summary = summarize(spec, records);
+  summary.wrote_files = dist.rank() == 0;
+  if (summary.wrote_files) detail::write_sweep_outputs(spec, records, summary, options.out_dir);
+  dist.barrier();
   return summary;
 }
 

@@ -68,6 +68,7 @@ struct SweepSummary {
   std::size_t chaos_full_points = 0;  ///< points chaotic in every run (the paper's black)
   std::size_t chaos_any_points = 0;   ///< points chaotic in at least one run
   std::vector<PointSummary> per_point;
+  bool wrote_files = true;  ///< false on the MPI ranks other than 0
 };
 
 /// Incidence per point and the map's region areas, from records sorted by (point, repeat).

@@ -22,4 +22,7 @@ struct SweepOptions {
 /// holds this sweep without `resume`.
 SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options);
 
+/// Whether this build can distribute a sweep over MPI ranks (under mpirun).
+bool sweeps_support_mpi();
+
 }  // namespace pneumachaos

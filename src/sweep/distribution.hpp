@@ -1,0 +1,26 @@
+#pragma once
+// Which share of a sweep this process computes: all of it, or under `mpirun -np N` the runs
+// whose index is congruent to its rank. MPI is used only when the build has it AND the
+// process was started by an MPI launcher, so the same binary works on its own.
+
+namespace pneumachaos::detail {
+
+class Distribution {
+ public:
+  static Distribution& instance();
+  [[nodiscard]] int rank() const { return rank_; }
+  [[nodiscard]] int size() const { return size_; }
+  /// Waits for every rank (no-op without MPI).
+  void barrier() const;
+  /// Whether this binary was built with MPI support.
+  static bool built_with_mpi();
+
+ private:
+  Distribution();
+  ~Distribution();
+  int rank_ = 0;
+  int size_ = 1;
+  bool initialized_here_ = false;
+};
+
+}  // namespace pneumachaos::detail
