@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 #include "commands.hpp"
 #include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
@@ -12,8 +14,8 @@ Action add_sweep(CLI::App& app) {
   struct Args {
     ScenarioArgs scenario;
     std::vector<std::string> grids;
-    std::size_t repeats = 5;
-    std::uint64_t seed = 1;
+    std::optional<std::size_t> repeats;
+    std::optional<std::uint64_t> seed;
     std::size_t threads = 0;
     std::string out;
     bool resume = false;
@@ -27,7 +29,9 @@ Action add_sweep(CLI::App& app) {
   add_scenario_options(cmd, args->scenario);
   cmd->add_option("--grid", args->grids,
                   "grid axis KEY=FROM:TO:STEP in the key's unit (repeatable)");
-  cmd->add_option("--repeats", args->repeats, "runs per grid point (default 5, as in the paper)");
+  cmd->add_option(
+      "--repeats", args->repeats,
+      "runs per grid point (default: the file's [sweep] repeats, else 5 as in the paper)");
   cmd->add_option("--seed", args->seed, "seed of the run-to-run variation (default 1)");
   cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
   cmd->add_option("--out", args->out, "directory for the journal and the results")->required();
@@ -36,10 +40,15 @@ Action add_sweep(CLI::App& app) {
   return [args]() {
     SweepSpec spec;
     spec.base = build_scenario(args->scenario.file, args->scenario.sets);
-    for (const auto& g : args->grids) spec.axes.push_back(parse_grid_axis(g));
+    // The command line wins over the scenario file's [sweep] table, which wins over defaults.
+    const SweepSettings file =
+        args->scenario.file.empty() ? SweepSettings{} : read_sweep_settings(args->scenario.file);
+    for (const auto& g : args->grids.empty() ? file.grid : args->grids) {
+      spec.axes.push_back(parse_grid_axis(g));
+    }
     if (spec.axes.empty()) spec.axes = paper_valve_grid();
-    spec.repeats = args->repeats;
-    spec.seed = args->seed;
+    spec.repeats = args->repeats.value_or(file.repeats.value_or(5));
+    spec.seed = args->seed.value_or(file.seed.value_or(1));
     spec.wolf = args->wolf;
     SweepOptions options;
     options.out_dir = args->out;

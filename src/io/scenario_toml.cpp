@@ -21,6 +21,7 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
   for (const auto& [name, node] : table) {
     const std::string key = prefix + std::string(name.str());
     const std::string where = location(origin, node.source());
+    if (prefix.empty() && key == "sweep") continue;  // read by read_sweep_settings
     if (const auto* sub = node.as_table()) {
       apply_table(scenario, *sub, key + ".", origin);
     } else if (const auto* i = node.as_integer()) {
@@ -48,6 +49,50 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
                 std::string("TOML syntax error: ") + std::string(e.description()));
   }
   apply_table(scenario, doc, "", origin);
+}
+
+SweepSettings read_sweep_settings(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path, "cannot open the scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  toml::table doc;
+  try {
+    doc = toml::parse(text.str(), path);
+  } catch (const toml::parse_error& e) {
+    throw Error(location(path, e.source()),
+                std::string("TOML syntax error: ") + std::string(e.description()));
+  }
+  SweepSettings s;
+  const toml::table* sweep = doc["sweep"].as_table();
+  if (sweep == nullptr) return s;
+  for (const auto& [name, node] : *sweep) {
+    const std::string key = "sweep." + std::string(name.str());
+    const std::string where = location(path, node.source()) + ": " + key;
+    if (key == "sweep.grid") {
+      const auto* list = node.as_array();
+      if (list == nullptr) throw Error(where, "expected a list of \"KEY=FROM:TO:STEP\" strings");
+      for (const auto& item : *list) {
+        const auto* str = item.as_string();
+        if (str == nullptr) throw Error(where, "expected a list of \"KEY=FROM:TO:STEP\" strings");
+        s.grid.push_back(str->get());
+      }
+    } else if (key == "sweep.repeats" || key == "sweep.seed") {
+      const auto* i = node.as_integer();
+      if (i == nullptr || i->get() < (key == "sweep.repeats" ? 1 : 0)) {
+        throw Error(where, key == "sweep.repeats" ? "expected a whole number >= 1"
+                                                  : "expected a whole number >= 0");
+      }
+      if (key == "sweep.repeats") {
+        s.repeats = static_cast<std::size_t>(i->get());
+      } else {
+        s.seed = static_cast<std::uint64_t>(i->get());
+      }
+    } else {
+      throw Error(where, "unknown key; [sweep] takes grid, repeats and seed");
+    }
+  }
+  return s;
 }
 
 Scenario load_scenario_file(const std::string& path) {

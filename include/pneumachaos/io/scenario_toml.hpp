@@ -1,6 +1,8 @@
 #pragma once
 // Reading scenarios from TOML files and applying command-line overrides.
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,15 @@ Scenario load_scenario_file(const std::string& path);
 
 /// Applies "key=value" overrides (from --set) in order.
 void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments);
+
+/// The optional [sweep] table of a scenario file: grid = ["KEY=FROM:TO:STEP", ...],
+/// repeats = N, seed = N. Other commands ignore the table.
+struct SweepSettings {
+  std::vector<std::string> grid;
+  std::optional<std::size_t> repeats;
+  std::optional<std::uint64_t> seed;
+};
+SweepSettings read_sweep_settings(const std::string& path);
 
 /// Defaults, then the file (when path is not empty), then the overrides; validated.
 Scenario build_scenario(const std::string& path, const std::vector<std::string>& assignments);
