@@ -30,6 +30,26 @@ class HarmonicOscillator final : public HybridSystem {
   double omega_;
 };
 
+/// Lorenz (sigma 10, rho 28, beta 8/3) as a hybrid system without events; largest exponent
+/// 0.9056 per time unit (Sprott, Chaos and Time-Series Analysis, 2003, table A.1).
+class LorenzSystem final : public HybridSystem {
+ public:
+  [[nodiscard]] std::size_t state_size() const override { return 3; }
+  void derivative(const Mode&, std::span<const double> s, std::span<double> d,
+                  double) const override {
+    d[0] = 10.0 * (s[1] - s[0]);
+    d[1] = s[0] * (28.0 - s[2]) - s[1];
+    d[2] = s[0] * s[1] - 8.0 / 3.0 * s[2];
+  }
+  [[nodiscard]] std::size_t event_count(const Mode&) const override { return 0; }
+  void event_functions(const Mode&, std::span<const double>, double,
+                       std::span<double>) const override {}
+  EventOutcome apply_event(std::size_t, Mode&, std::span<double>, double) const override {
+    return {};
+  }
+  [[nodiscard]] Mode initial_mode(std::span<const double>, double) const override { return {}; }
+};
+
 /// A block of mass m on a fixed floor with Coulomb friction (static Fs, kinetic Fc), pushed
 /// through a spring k whose far end moves at constant speed u: the pushing force ramps while
 /// the block sticks. Analytic cycle (derived in test_event_integrator.cpp): breakaway at

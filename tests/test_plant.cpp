@@ -1,4 +1,5 @@
-// The cylinder model against conservation laws and closed-form answers.
+// The cylinder model against conservation laws and closed-form answers, on the simple rig
+// (one rigid mass, Stribeck seal, volumes following the piston).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +11,7 @@ namespace pneumachaos {
 namespace {
 
 Scenario frictionless_closed(double k) {
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.circuit.S1_m2 = 0.0;  // both valves shut: two closed chambers, a gas spring
   s.circuit.S2_m2 = 0.0;
   s.friction.kind = FrictionKind::kClassic;
@@ -84,7 +85,7 @@ TEST(Plant, AdiabaticGasSpringConservesEnergy) {
 TEST(Plant, SteadyMeterOutSpeedMatchesChokedFlowBalance) {
   // Choked exhaust, isothermal exhaust temperature: W2 = S2 C P2 and W2 = P2 A2 v/(R T) give
   // v = S2 C R T / A2 independent of P2 (C = choked_flux_factor; about 199 m/s * S2/A2).
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.friction.kind = FrictionKind::kClassic;
   const Plant plant(s);
   const double v_expected = s.circuit.S2() * choked_flux_factor(s.gas, s.temperature_K) *
@@ -105,7 +106,7 @@ TEST(Plant, SteadyMeterOutSpeedMatchesChokedFlowBalance) {
 }
 
 TEST(Plant, TrueStictionHoldsPositionWhilePressuresEvolve) {
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip
   const Plant plant(s);
   const auto r = simulate(plant, SimulationOptions::from(s.run));
@@ -133,7 +134,7 @@ TEST(Plant, TrueStictionHoldsPositionWhilePressuresEvolve) {
 }
 
 TEST(Plant, BreaksAwayFromTheStopWhenDriveExceedsStaticFriction) {
-  const Scenario s = default_scenario();
+  const Scenario s = simple_rig_scenario();
   const Plant plant(s);
   const auto r = simulate(plant, SimulationOptions::from(s.run));
   ASSERT_FALSE(r.summary.event_log.empty());
@@ -148,7 +149,7 @@ TEST(Plant, BreaksAwayFromTheStopWhenDriveExceedsStaticFriction) {
 }
 
 TEST(Plant, RunEndsAtTheEndOfStroke) {
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.cylinder.stroke_m = 0.1;
   const Plant plant(s);
   const auto r = simulate(plant, SimulationOptions::from(s.run));
@@ -158,7 +159,7 @@ TEST(Plant, RunEndsAtTheEndOfStroke) {
 }
 
 TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.friction.kind = FrictionKind::kLuGre;
   s.run.duration_s = 3.0;
   const Plant plant(s);
@@ -176,7 +177,7 @@ TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
 TEST(Plant, StiffSpringCouplingMovesLikeOneRigidMass) {
   // A very stiff, damped coupling with a frictionless guide must reproduce the rigid model's
   // steady speed: the load and the piston then share the choked meter-out velocity.
-  Scenario s = default_scenario();
+  Scenario s = simple_rig_scenario();
   s.friction.kind = FrictionKind::kClassic;
   s.load.coupling = LoadCoupling::kSpring;
   s.load.piston_mass_kg = 0.5;

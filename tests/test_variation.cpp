@@ -26,8 +26,7 @@ TEST(Variation, NonzeroVariationDiffersPerRunAndIsReproducible) {
   ASSERT_EQ(a.friction.texture.size(), 4u);
   // The texture makes the friction level depend on the position along the bore.
   const auto model = make_friction_model(a.friction);
-  EXPECT_NE(model->holding_force_N({0.0, 0.0, 0.010}, {}),
-            model->holding_force_N({0.0, 0.0, 0.017}, {}));
+  EXPECT_NE(model->steady_force_N({0.01, 0.0, 0.010}), model->steady_force_N({0.01, 0.0, 0.017}));
 }
 
 TEST(Variation, RunSeedsAreDistinctAcrossPointsAndRepeats) {

@@ -25,6 +25,7 @@ Action add_scenario(CLI::App& app);
 Action add_stability(CLI::App& app);
 Action add_analyze(CLI::App& app);
 Action add_sweep(CLI::App& app);
+Action add_lyapunov(CLI::App& app);
 
 /// Exit codes shared by all commands.
 inline constexpr int kExitOk = 0;

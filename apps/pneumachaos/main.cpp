@@ -26,6 +26,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_stability);
   add(pneumachaos::cli::add_analyze);
   add(pneumachaos::cli::add_sweep);
+  add(pneumachaos::cli::add_lyapunov);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

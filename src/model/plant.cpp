@@ -150,7 +150,7 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
       if (m != ContactMode::kSlidePos) add(EventType::kStopHit, c);
-      add(EventType::kStrokeEnd, c);
+      if (!scenario_.cylinder.volumes_frozen()) add(EventType::kStrokeEnd, c);
     }
   }
   return list;
@@ -237,6 +237,19 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       break;
   }
   return out;
+}
+
+std::vector<double> Plant::state_scales() const {
+  std::vector<double> s(layout_.size, 1e-6);  // friction internal states: bristle deflections
+  const auto& L = layout_;
+  s[L.x] = 1e-3;
+  s[L.v] = 1e-2;
+  s[L.P1] = s[L.P2] = 1e4;
+  if (L.has_load_body()) {
+    s[L.load_x] = 1e-3;
+    s[L.load_v] = 1e-2;
+  }
+  return s;
 }
 
 Mode Plant::sliding_mode(int direction) const {

@@ -178,6 +178,11 @@ std::vector<KeySpec> build_keys() {
   k.push_back(number(
       "cylinder.dead_volume_rod_cm3", "cm^3", "rod-side volume at full stroke, tubing included",
       1e-6, kPositive, [](auto& s) -> auto& { return s.cylinder.dead_volume_rod_m3; }));
+  k.push_back(number(
+      "cylinder.frozen_position_mm", "mm",
+      "evaluate the chamber volumes at this position, stroke end ignored "
+      "(-1: off, volumes follow the piston)",
+      1e-3, Range{-1.0, 1e6}, [](auto& s) -> auto& { return s.cylinder.frozen_position_m; }));
   k.push_back(word<FlowLaw>(
       "valve.law", "valve flow law", {"iso6358", "isentropic"},
       [](auto& s) -> auto& { return s.valve.law; }));

@@ -9,14 +9,20 @@ struct CylinderGeometry {
   double stroke_m = 0.500;
   double dead_volume_head_m3 = 20e-6;  ///< chamber 1 volume at x = 0, tubing included
   double dead_volume_rod_m3 = 20e-6;   ///< chamber 2 volume at x = stroke, tubing included
+  /// When >= 0: the chamber volumes are evaluated at this piston position whatever x is, and
+  /// the stroke end does not stop the run (MODEL.md's "volumes frozen at one piston
+  /// position"): the dynamics of a long stroke around one position, for long records.
+  double frozen_position_m = -1e-3;  ///< -1 mm: off (the key's documented value)
+  [[nodiscard]] bool volumes_frozen() const { return frozen_position_m >= 0.0; }
 
   [[nodiscard]] double area_head_m2() const;  ///< A1, full bore
   [[nodiscard]] double area_rod_m2() const;   ///< A2, annulus
   [[nodiscard]] double volume_head_m3(double x_m) const {
-    return dead_volume_head_m3 + area_head_m2() * x_m;
+    return dead_volume_head_m3 + area_head_m2() * (volumes_frozen() ? frozen_position_m : x_m);
   }
   [[nodiscard]] double volume_rod_m3(double x_m) const {
-    return dead_volume_rod_m3 + area_rod_m2() * (stroke_m - x_m);
+    return dead_volume_rod_m3 +
+           area_rod_m2() * (stroke_m - (volumes_frozen() ? frozen_position_m : x_m));
   }
 };
 

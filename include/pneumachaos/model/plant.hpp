@@ -53,6 +53,10 @@ class Plant final : public HybridSystem {
   [[nodiscard]] std::vector<double> initial_state() const;
   [[nodiscard]] PlantOutputs outputs(const Mode& mode, std::span<const double> x) const;
 
+  /// Typical magnitudes of the state variables (1 mm, 10 mm/s, 10 kPa, 1 um of bristle),
+  /// for norms that weigh positions, speeds and pressures alike (model Lyapunov exponent).
+  [[nodiscard]] std::vector<double> state_scales() const;
+
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
   [[nodiscard]] const Scenario& scenario() const { return scenario_; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }

@@ -1,0 +1,59 @@
+#pragma once
+// The largest Lyapunov exponent of a model itself (not of a sampled record): two nearby
+// trajectories integrated side by side, their separation measured and renormalised at fixed
+// intervals (Benettin, Galgani, Giorgilli & Strelcyn 1980, Meccanica 15). Each trajectory is a
+// full hybrid integration, so stick/slip and stop events are located on both; the separation
+// is renormalised only when both are in the same discrete mode, which keeps the perturbed
+// state consistent (a stuck piston has v = 0 exactly on both).
+
+#include <vector>
+
+#include "pneumachaos/core/hybrid_system.hpp"
+#include "pneumachaos/simulate/event_integrator.hpp"
+
+namespace pneumachaos {
+
+struct ModelLyapunovOptions {
+  double transient_s = 5.0;     ///< integrated and discarded first
+  double measure_s = 40.0;      ///< time over which the stretching is averaged
+  double renormalize_s = 0.02;  ///< interval between renormalisations
+  /// Initial and renormalised separation in the scaled norm: far above the integration error,
+  /// far below the size of the motion.
+  double separation = 1e-4;
+  /// Per-state scales of the norm (empty: all 1); states with scale 0 are not perturbed.
+  std::vector<double> scales;
+  /// Index of the state the initial separation lies along (a pressure, which does not
+  /// disturb a stuck contact).
+  std::size_t perturbed_state = 0;
+  double relative_tolerance = 1e-9;
+  double absolute_tolerance = 1e-12;
+  double max_step_s = 2e-3;
+  StepperKind stepper = StepperKind::kDopri5;
+  std::size_t blocks = 10;  ///< for the uncertainty (standard error between blocks)
+  void validate() const;
+};
+
+struct ModelLyapunovResult {
+  bool ok = true;
+  std::string message;
+  double lambda_per_s = 0.0;
+  double uncertainty_per_s = 0.0;
+  std::vector<double> running_time_s, running_per_s;  ///< convergence of the estimate
+  std::size_t renormalizations = 0;
+  std::size_t postponed = 0;  ///< intervals that ended with the two in different modes
+};
+
+/// Starts from (x0, mode0) at t = 0.
+ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector<double>& x0,
+                                   const ModelLyapunovOptions& options);
+
+class Plant;
+
+/// The cylinder's exponent from the start of a run: the plant's state scales, the separation
+/// along P1 (which leaves a stuck contact stuck), rtol 1e-9 and atol 1e-12 times
+/// tolerance_factor (the separation, 1 Pa by default, stays ~3 decades above the integration
+/// error and below the motion); transient, measuring time and intervals from `base`.
+ModelLyapunovResult plant_lyapunov(const Plant& plant, ModelLyapunovOptions base = {},
+                                   double tolerance_factor = 1.0);
+
+}  // namespace pneumachaos
