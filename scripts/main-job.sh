@@ -1,12 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the main job on the built-in defaults.
-# Until `reproduce` exists this is `simulate` on the default scenario, written to out/.
+# Installs what is missing, builds, and runs the main job: `reproduce` on the built-in
+# defaults, writing the report to report/index.html (about 5 minutes on 2 cores; run again
+# after an interruption and it resumes its sweeps).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target pneumachaos
-mkdir -p out
-./build/apps/pneumachaos/pneumachaos scenario > out/scenario.toml
-./build/apps/pneumachaos/pneumachaos simulate -o out/simulate.csv
-echo "wrote out/scenario.toml and out/simulate.csv"
+./build/apps/pneumachaos/pneumachaos reproduce --out report "$@"

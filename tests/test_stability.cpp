@@ -59,7 +59,7 @@ TEST(Equilibrium, NoSteadyMotionIsAResultWithAReason) {
   const Plant shut(scenario({"circuit.S2_mm2=0"}));
   EXPECT_FALSE(find_equilibria(shut).exists());
   const StabilityResult s = analyze_stability(stuck);
-  EXPECT_EQ(s.verdict_full, Verdict::kNoEquilibrium);
+  EXPECT_EQ(s.verdict_full, StabilityVerdict::kNoEquilibrium);
   EXPECT_FALSE(s.reason.empty());
 }
 
@@ -106,7 +106,7 @@ TEST(Stability, ClassicFrictionIsDampedByBothAnalyses) {
   EXPECT_GT(r.paper.a1, 0.0);
   EXPECT_GT(r.paper.zeta, 0.0);
   EXPECT_LT(r.max_real_part_per_s, 0.0);
-  EXPECT_EQ(r.verdict_full, Verdict::kDamped);
+  EXPECT_EQ(r.verdict_full, StabilityVerdict::kDamped);
   EXPECT_TRUE(r.agree());
 }
 
@@ -130,7 +130,7 @@ TEST(Stability, MeterInUsesB1) {
   const auto& s = plant.scenario();
   const double m = s.load.mass_kg;
   EXPECT_NEAR(r.paper.b1 - s.friction.viscous_Ns_per_m, r.paper.b * m, 1e-6 * r.paper.b * m);
-  EXPECT_EQ(r.verdict_full, Verdict::kDamped);
+  EXPECT_EQ(r.verdict_full, StabilityVerdict::kDamped);
 }
 
 TEST(StabilityMap, AgreementRateOnThePaperGrid) {
@@ -149,7 +149,7 @@ TEST(StabilityMap, AgreementRateOnThePaperGrid) {
   for (const auto& p : wide.points) {
     if (p.result.agree()) continue;
     EXPECT_DOUBLE_EQ(p.coordinates[1], 0.5);
-    EXPECT_EQ(p.result.paper.verdict, Verdict::kSelfExcited);
+    EXPECT_EQ(p.result.paper.verdict, StabilityVerdict::kSelfExcited);
     EXPECT_LT(std::abs(p.result.max_real_part_per_s), 3.0);  // near the border, not far off
   }
 }
@@ -226,7 +226,7 @@ std::vector<std::string> with_steady_volumes(std::vector<std::string> sets) {
 TEST(StabilityBySimulation, DampedModesDecayAtTheirEigenvalues) {
   const Plant plant(scenario(with_steady_volumes({"friction.model=classic"})));
   const StabilityResult r = analyze_stability(plant);
-  ASSERT_EQ(r.verdict_full, Verdict::kDamped);
+  ASSERT_EQ(r.verdict_full, StabilityVerdict::kDamped);
   // The slowest mode is real here; the oscillatory pair decays faster.
   const std::complex<double> real_mode = r.eigenvalues.front();
   ASSERT_EQ(real_mode.imag(), 0.0);
@@ -244,7 +244,7 @@ TEST(StabilityBySimulation, SelfExcitedModeGrowsAtItsEigenvalue) {
   sets.push_back("friction.B_Ns_per_m=70");
   const Plant plant(scenario(with_steady_volumes(sets)));
   const StabilityResult r = analyze_stability(plant);
-  ASSERT_EQ(r.verdict_full, Verdict::kSelfExcited);
+  ASSERT_EQ(r.verdict_full, StabilityVerdict::kSelfExcited);
   ASSERT_GT(r.oscillatory_pair.real(), 0.0);
   // 1e-7 m/s grows about e^(7.3 * 1.2) = 6000-fold: under 1 mm/s, far inside the linear
   // range around v0 = 66 mm/s.

@@ -27,6 +27,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_analyze);
   add(pneumachaos::cli::add_sweep);
   add(pneumachaos::cli::add_lyapunov);
+  add(pneumachaos::cli::add_reproduce);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,13 +9,13 @@
 
 namespace pneumachaos {
 
-const char* verdict_name(Verdict v) {
+const char* verdict_name(StabilityVerdict v) {
   switch (v) {
-    case Verdict::kDamped:
+    case StabilityVerdict::kDamped:
       return "damped";
-    case Verdict::kSelfExcited:
+    case StabilityVerdict::kSelfExcited:
       return "self-excited";
-    case Verdict::kNoEquilibrium:
+    case StabilityVerdict::kNoEquilibrium:
       return "no-equilibrium";
   }
   return "?";
@@ -48,7 +48,7 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) 
   const double c1 = meter_out ? c.a1 : c.b1;
   const double c2 = meter_out ? c.a2 : c.b2;
   c.zeta = c2 > 0.0 ? c1 / (2.0 * std::sqrt(m * c2)) : std::numeric_limits<double>::quiet_NaN();
-  c.verdict = c1 > 0.0 ? Verdict::kDamped : Verdict::kSelfExcited;
+  c.verdict = c1 > 0.0 ? StabilityVerdict::kDamped : StabilityVerdict::kSelfExcited;
   return c;
 }
 
@@ -83,7 +83,7 @@ StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& op
       break;
     }
   }
-  r.verdict_full = dominant.real() < 0.0 ? Verdict::kDamped : Verdict::kSelfExcited;
+  r.verdict_full = dominant.real() < 0.0 ? StabilityVerdict::kDamped : StabilityVerdict::kSelfExcited;
   return r;
 }
 

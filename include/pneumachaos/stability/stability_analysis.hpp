@@ -10,8 +10,8 @@
 
 namespace pneumachaos {
 
-enum class Verdict { kDamped, kSelfExcited, kNoEquilibrium };
-const char* verdict_name(Verdict v);
+enum class StabilityVerdict { kDamped, kSelfExcited, kNoEquilibrium };
+const char* verdict_name(StabilityVerdict v);
 
 /// Kosaki & Sano's coefficients. Meter-out: a1 (eq. 9), a2 and a (eq. 6); meter-in: b1
 /// (eq. 11), b2 and b (eq. 10). zeta = c1 / (2 sqrt(m c2)) (eq. 8) for the circuit's pair.
@@ -22,7 +22,7 @@ struct PaperCoefficients {
   double a1 = 0.0, a2 = 0.0, a = 0.0;  ///< meter-out [N*s/m], [N/m], [1/s]
   double b1 = 0.0, b2 = 0.0, b = 0.0;  ///< meter-in
   double zeta = 0.0;                   ///< damping coefficient of the circuit's pair (eq. 8)
-  Verdict verdict = Verdict::kDamped;  ///< sign of a1 (meter-out) or b1 (meter-in)
+  StabilityVerdict verdict = StabilityVerdict::kDamped;  ///< sign of a1 (meter-out) or b1 (meter-in)
 };
 
 PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq);
@@ -32,7 +32,7 @@ struct StabilityOptions {
 };
 
 struct StabilityResult {
-  Verdict verdict_full = Verdict::kNoEquilibrium;  ///< from the Jacobian's eigenvalues
+  StabilityVerdict verdict_full = StabilityVerdict::kNoEquilibrium;  ///< from the Jacobian's eigenvalues
   std::string reason;                              ///< when there is no equilibrium
   Equilibrium equilibrium;
   PaperCoefficients paper;
@@ -47,7 +47,7 @@ struct StabilityResult {
   double oscillatory_frequency_Hz = 0.0;
   double oscillatory_damping_ratio = 0.0;
   [[nodiscard]] bool agree() const { return paper.verdict == verdict_full; }
-  [[nodiscard]] bool has_equilibrium() const { return verdict_full != Verdict::kNoEquilibrium; }
+  [[nodiscard]] bool has_equilibrium() const { return verdict_full != StabilityVerdict::kNoEquilibrium; }
 };
 
 StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& options = {});

@@ -1,0 +1,38 @@
+#pragma once
+// The report's figures (the paper's Figs. 2-7 and the stability map) as FigureSpecs: data
+// tables and gnuplot commands, ready for render_figure.
+
+#include <string>
+#include <vector>
+
+#include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/core/time_series.hpp"
+#include "pneumachaos/stability/stability_map.hpp"
+#include "pneumachaos/sweep/sweep.hpp"
+
+namespace pneumachaos {
+
+struct FigureSpec;
+
+/// A labelled velocity record for Fig. 2.
+struct LabelledRecord {
+  std::string label;
+  TimeSeries series;
+};
+
+FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
+                                 const std::vector<LabelledRecord>& meter_out);
+/// Seal friction against piston velocity over `seconds` of each record (Fig. 3's loops).
+FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds);
+FigureSpec stability_map_figure(const StabilityMap& map);
+/// Chaos incidence in grey (white 0 %, black 100 %) with the stick-slip region hatched.
+FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
+                                const SweepSpec& spec, const SweepSummary& summary);
+/// Fig. 7: (a) the record, (b) spectrum, autocorrelation and Lyapunov convergence,
+/// (c) the delay-embedded trajectory, (d) its Poincare section.
+std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, double rate_Hz,
+                                                const AnalysisResult& a,
+                                                const std::vector<double>& model_running_t,
+                                                const std::vector<double>& model_running);
+
+}  // namespace pneumachaos

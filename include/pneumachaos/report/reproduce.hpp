@@ -1,0 +1,36 @@
+#pragma once
+// `reproduce`: the paper's figures and claims from built-in defaults, as a self-contained
+// HTML report with every figure's data and gnuplot script beside it.
+
+#include <string>
+#include <vector>
+
+#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/report/figure.hpp"
+
+namespace pneumachaos {
+
+struct ReproduceOptions {
+  std::string out_dir = "report";
+  /// A coarse grid (6 x 7 points, 2 repeats, 5 s records) and shorter averages: the whole
+  /// report in well under a minute. Full: the paper's grids, 5 repeats, 10 s records.
+  bool quick = false;
+  std::size_t threads = 0;
+  bool progress = true;  ///< stage lines on a terminal only
+};
+
+struct ReproduceResult {
+  std::vector<FigureFiles> figures;
+  std::vector<Claim> claims;
+  std::string index_html;  ///< path of the report
+};
+
+/// Builds the report; sweeps live in out_dir/sweeps and are resumed when the command is run
+/// again after an interruption. Throws Error for an unusable out_dir or a failed figure.
+ReproduceResult reproduce(const ReproduceOptions& options);
+
+/// The HTML page for a set of figures and claims (relative links into figures/).
+std::string report_html(const std::vector<FigureFiles>& figures, const std::vector<Claim>& claims,
+                        const std::string& scenario_toml, const std::string& settings);
+
+}  // namespace pneumachaos

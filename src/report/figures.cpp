@@ -1,0 +1,263 @@
+#include "pneumachaos/report/figures.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pneumachaos/report/figure.hpp"
+
+namespace pneumachaos {
+namespace {
+
+std::string records_table(const std::vector<LabelledRecord>& records, double max_s) {
+  std::string out = "# t[s]";
+  for (const auto& r : records) out += " v[mm/s](" + r.label + ")";
+  out += "\n";
+  std::size_t n = 0;
+  for (const auto& r : records) n = std::max(n, r.series.size());
+  const double rate = records.front().series.rate_Hz();
+  for (std::size_t k = 0; k < n && k / rate <= max_s; ++k) {
+    out += fmt::format("{}", k / rate);
+    for (const auto& r : records) {
+      const auto& v = r.series.channel("v").values;
+      out += k < v.size() ? fmt::format(" {}", 1e3 * v[k]) : std::string(" NaN");
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string plot_columns(const std::string& file, const std::vector<LabelledRecord>& records) {
+  std::string out;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    out += fmt::format("{}'{}' using 1:{} with lines lw 1.5 title '{}'", i ? ", " : "", file, i + 2,
+                       records[i].label);
+  }
+  return out;
+}
+
+}  // namespace
+
+FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
+                                 const std::vector<LabelledRecord>& meter_out) {
+  FigureSpec f;
+  f.name = "fig2_time_responses";
+  f.caption =
+      "Fig. 2: velocity responses of the simple rig (one rigid mass, classic friction, as "
+      "the paper's model) after the valve switches: (a) meter-in, (b) meter-out.";
+  f.data = {{"fig2_meter_in.dat", records_table(meter_in, 3.0)},
+            {"fig2_meter_out.dat", records_table(meter_out, 3.0)}};
+  f.height = 640;
+  f.plot =
+      "set multiplot layout 2,1\nset grid\nset xlabel 'time [s]'\nset ylabel 'velocity [mm/s]'\n"
+      "set key outside right\n"
+      "set title '(a) meter-in: supply speed controller S1'\nplot " +
+      plot_columns("fig2_meter_in.dat", meter_in) +
+      "\nset title '(b) meter-out: exhaust speed controller S2'\nplot " +
+      plot_columns("fig2_meter_out.dat", meter_out) + "\nunset multiplot";
+  return f;
+}
+
+FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds) {
+  FigureSpec f;
+  f.name = "fig3_friction_velocity";
+  f.caption =
+      "Fig. 3: seal friction force against piston velocity: the loops the friction traces "
+      "while the velocity oscillates (the paper's A-B-C-B-D-A).";
+  std::string plot =
+      "set grid\nset xlabel 'piston velocity [mm/s]'\nset ylabel 'seal friction [N]'\n"
+      "set key top left\nplot ";
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& s = records[i].series;
+    const std::string file = fmt::format("fig3_record{}.dat", i + 1);
+    std::string table = "# v[mm/s] F_friction[N] (" + records[i].label + ")\n";
+    const auto& v = s.channel("v").values;
+    const auto& F = s.channel("F_friction").values;
+    // The last `seconds` of the record: the motion has settled onto its attractor.
+    const std::size_t n = std::min(v.size(), static_cast<std::size_t>(seconds * s.rate_Hz()));
+    for (std::size_t k = v.size() - n; k < v.size(); ++k)
+      table += fmt::format("{} {}\n", 1e3 * v[k], F[k]);
+    f.data.emplace_back(file, table);
+    plot += fmt::format("{}'{}' using 1:2 with lines lw 1 title '{}'", i ? ", " : "", file,
+                        records[i].label);
+  }
+  f.plot = plot;
+  return f;
+}
+
+FigureSpec stability_map_figure(const StabilityMap& map) {
+  FigureSpec f;
+  f.name = "stability_map";
+  f.caption =
+      "Stability of the steady motion over S1 x S2 (full-model Jacobian): largest real "
+      "part of the eigenvalues, red self-excited, blue damped; crosses: no steady motion.";
+  std::string table = "# S1[mm^2] S2[mm^2] max_real_part[1/s] (NaN: no equilibrium)\n";
+  const std::size_t n2 = map.axes[1].values.size();
+  for (std::size_t i = 0; i < map.points.size(); ++i) {
+    const auto& p = map.points[i];
+    const double v = p.result.has_equilibrium() ? p.result.max_real_part_per_s : NAN;
+    table += fmt::format("{} {} {}\n", p.coordinates[0], p.coordinates[1], v);
+    if ((i + 1) % n2 == 0) table += "\n";
+  }
+  f.data = {{"stability_map.dat", table}};
+  f.plot =
+      "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]'\n"
+      "set palette defined (-1 'blue', 0 'white', 1 'red')\nset cbrange [-30:30]\n"
+      "set view map\nset key off\n"
+      "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:2:($3 != $3 ? 0 : 1/0) "
+      "with points pt 2 lc 'black'";
+  return f;
+}
+
+FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
+                                const SweepSpec& spec, const SweepSummary& summary) {
+  FigureSpec f;
+  f.name = name;
+  f.caption = title +
+              ": incidence of chaos in grey (white 0 %, black 100 %), stick-slip region "
+              "hatched (stick-slip in at least half of the runs).";
+  const auto& s1 = spec.axes[0].values;
+  const auto& s2 = spec.axes[1].values;
+  const double d1 = s1.size() > 1 ? s1[1] - s1[0] : 0.05;
+  const double d2 = s2.size() > 1 ? s2[1] - s2[0] : 0.15;
+  std::string grid = "# S1[mm^2] S2[mm^2] chaos_incidence stick_slip_incidence\n";
+  std::string hatch = "# hatching: x y dx dy\n";
+  for (std::size_t i = 0; i < summary.per_point.size(); ++i) {
+    const auto& p = summary.per_point[i];
+    grid += fmt::format("{} {} {} {}\n", p.coordinates[0], p.coordinates[1], p.chaos_incidence,
+                        p.stick_slip_incidence);
+    if ((i + 1) % s2.size() == 0) grid += "\n";
+    if (p.stick_slip_incidence >= 0.5) {
+      // Three oblique strokes across the cell.
+      for (double u : {-0.5, 0.0, 0.5}) {
+        const double x0 = p.coordinates[0] - d1 / 2, y0 = p.coordinates[1] - d2 / 2;
+        const double a = std::max(0.0, u), b = std::max(0.0, -u);
+        hatch += fmt::format("{} {} {} {}\n", x0 + a * d1, y0 + b * d2, (1 - std::abs(u)) * d1,
+                             (1 - std::abs(u)) * d2);
+      }
+    }
+  }
+  f.data = {{name + ".dat", grid}, {name + "_hatch.dat", hatch}};
+  f.plot = fmt::format(
+      "set title '{}'\nset xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'chaos "
+      "incidence'\n"
+      "set palette gray negative\nset cbrange [0:1]\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
+      "set key off\n"
+      "plot '{}.dat' using 1:2:3 with image, '{}_hatch.dat' using 1:2:3:4 with vectors nohead lc "
+      "'#d62728' lw 1.2",
+      title, s1.front() - d1 / 2, s1.back() + d1 / 2, s2.front() - d2 / 2, s2.back() + d2 / 2, name,
+      name);
+  return f;
+}
+
+std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, double rate_Hz,
+                                                const AnalysisResult& a,
+                                                const std::vector<double>& model_t,
+                                                const std::vector<double>& model_running) {
+  std::vector<FigureSpec> figs;
+  {
+    FigureSpec f;
+    f.name = "fig7a_record";
+    f.caption = "Fig. 7a: the piston velocity record of the chaotic example (1 kHz).";
+    std::string t = "# t[s] v[mm/s]\n";
+    for (std::size_t k = 0; k < v.size() && k < static_cast<std::size_t>(5 * rate_Hz); ++k) {
+      t += fmt::format("{} {}\n", k / rate_Hz, 1e3 * v[k]);
+    }
+    f.data = {{"fig7a_record.dat", t}};
+    f.height = 360;
+    f.plot =
+        "set grid\nset xlabel 'time [s]'\nset ylabel 'velocity [mm/s]'\nset key off\n"
+        "plot 'fig7a_record.dat' using 1:2 with lines lw 1";
+    figs.push_back(f);
+  }
+  {
+    FigureSpec f;
+    f.name = "fig7b_indices";
+    f.caption =
+        "Fig. 7b: power spectrum, autocorrelation and the convergence of the maximum "
+        "Lyapunov exponent (Wolf's running estimate, the model's own, and the divergence "
+        "estimate as a line).";
+    std::string sp = "# f[Hz] psd[(mm/s)^2/Hz]\n";
+    for (std::size_t k = 1; k < a.spectrum.psd.size(); ++k) {
+      sp += fmt::format("{} {}\n", a.spectrum.frequency_Hz[k], 1e6 * a.spectrum.psd[k]);
+    }
+    std::string ac = "# lag[s] r\n";
+    for (std::size_t k = 0; k < a.acf.r.size() && k < static_cast<std::size_t>(2 * rate_Hz); ++k) {
+      ac += fmt::format("{} {}\n", k / rate_Hz, a.acf.r[k]);
+    }
+    std::string ly = "# t[s] wolf_running[1/s]\n";
+    for (std::size_t k = 0; k < a.wolf.running_per_s.size(); ++k) {
+      ly += fmt::format("{} {}\n", a.wolf.running_time_s[k], a.wolf.running_per_s[k]);
+    }
+    std::string ml = "# t[s] model_running[1/s]\n";
+    for (std::size_t k = 0; k < model_running.size(); ++k)
+      ml += fmt::format("{} {}\n", model_t[k] - model_t.front(), model_running[k]);
+    f.data = {{"fig7b_spectrum.dat", sp},
+              {"fig7b_acf.dat", ac},
+              {"fig7b_wolf.dat", ly},
+              {"fig7b_model.dat", ml}};
+    f.width = 1200;
+    f.height = 400;
+    f.plot = fmt::format(
+        "set multiplot layout 1,3\nset grid\n"
+        "set title 'power spectrum'\nset logscale y\nset xrange [0:100]\nset xlabel 'frequency "
+        "[Hz]'\n"
+        "set ylabel 'PSD [(mm/s)^2/Hz]'\nset key off\nplot 'fig7b_spectrum.dat' using 1:2 with "
+        "lines\n"
+        "unset logscale y\nset xrange [*:*]\nset title 'autocorrelation'\nset xlabel 'lag [s]'\n"
+        "set ylabel 'r'\nplot 'fig7b_acf.dat' using 1:2 with lines, 0 lc 'gray'\n"
+        "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\nset key "
+        "bottom right\n"
+        "set yrange [0:{}]\n"
+        "plot 'fig7b_wolf.dat' using 1:2 with lines title 'Wolf (running)', 'fig7b_model.dat' "
+        "using "
+        "1:2 with lines title 'model (running)', {} with lines dt 2 title 'divergence curve'\n"
+        "unset multiplot",
+        // The early running values are huge; the range shows where the estimates settle.
+        std::max(10.0, 3.0 * (model_running.empty() ? 0.0 : model_running.back())),
+        a.divergence.found_linear_region ? a.divergence.lambda_per_s : 0.0);
+    figs.push_back(f);
+  }
+  {
+    FigureSpec f;
+    f.name = "fig7c_trajectory";
+    f.caption = fmt::format(
+        "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)), "
+        "tau = {:.0f} ms.",
+        1e3 * a.delay.delay / rate_Hz);
+    const std::size_t tau = a.delay.delay;
+    std::string t = "# v(t) v(t+tau) v(t+2tau) [mm/s]\n";
+    for (std::size_t k = 0; k + 2 * tau < v.size() && k < static_cast<std::size_t>(4 * rate_Hz);
+         ++k) {
+      t += fmt::format("{} {} {}\n", 1e3 * v[k], 1e3 * v[k + tau], 1e3 * v[k + 2 * tau]);
+    }
+    f.data = {{"fig7c_trajectory.dat", t}};
+    f.width = 700;
+    f.height = 600;
+    f.plot =
+        "set xlabel 'v(t)'\nset ylabel 'v(t+tau)'\nset zlabel 'v(t+2tau)'\nset view 60,30\n"
+        "set key off\nsplot 'fig7c_trajectory.dat' using 1:2:3 with lines lw 0.6";
+    figs.push_back(f);
+  }
+  {
+    FigureSpec f;
+    f.name = "fig7d_poincare";
+    f.caption = fmt::format(
+        "Fig. 7d: Poincare section of the embedded trajectory through the plane "
+        "v(t) = {:.1f} mm/s (upward crossings).",
+        1e3 * a.poincare.level);
+    std::string t = "# v(t+tau) v(t+2tau) [mm/s] at the crossings\n";
+    for (const auto& p : a.poincare.points) t += fmt::format("{} {}\n", 1e3 * p[0], 1e3 * p[1]);
+    f.data = {{"fig7d_poincare.dat", t}};
+    f.width = 600;
+    f.height = 560;
+    f.plot =
+        "set grid\nset xlabel 'v(t+tau) [mm/s]'\nset ylabel 'v(t+2tau) [mm/s]'\nset key off\n"
+        "plot 'fig7d_poincare.dat' using 1:2 with points pt 7 ps 0.5";
+    figs.push_back(f);
+  }
+  return figs;
+}
+
+}  // namespace pneumachaos

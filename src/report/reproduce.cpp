@@ -1,0 +1,156 @@
+#include "pneumachaos/report/reproduce.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/report/figures.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
+
+namespace pneumachaos {
+namespace {
+
+class Stages {
+ public:
+  Stages(bool show, int total) : show_(show && ::isatty(STDERR_FILENO) != 0), total_(total) {}
+  void next(const std::string& what) {
+    if (show_) fmt::print(stderr, "reproduce: [{}/{}] {}\n", ++done_, total_, what);
+  }
+
+ private:
+  bool show_;
+  int total_, done_ = 0;
+};
+
+SimulationResult run(Scenario s, double duration_s) {
+  s.run.duration_s = duration_s;
+  const Plant plant(s);
+  SimulationResult r = simulate(plant, SimulationOptions::from(s.run));
+  if (!r.summary.ok()) throw Error("reproduce", "a simulation failed: " + r.summary.message);
+  return r;
+}
+
+// The paper's model for Fig. 2: one rigid mass, eq. (4) friction, volumes following the piston.
+Scenario paper_model(CircuitKind kind, double S1_mm2, double S2_mm2) {
+  Scenario s = simple_rig_scenario();
+  s.friction.kind = FrictionKind::kClassic;
+  s.circuit.kind = kind;
+  s.circuit.S1_m2 = S1_mm2 * 1e-6;
+  s.circuit.S2_m2 = S2_mm2 * 1e-6;
+  return s;
+}
+
+}  // namespace
+
+ReproduceResult reproduce(const ReproduceOptions& o) {
+  const std::string fig_dir = o.out_dir + "/figures";
+  std::error_code ec;
+  std::filesystem::create_directories(fig_dir, ec);
+  if (ec) throw Error(o.out_dir, "cannot create the report directory: " + ec.message());
+  Stages stage(o.progress, 9);
+  ReproduceResult result;
+  const auto add = [&](const FigureSpec& spec) {
+    result.figures.push_back(render_figure(spec, fig_dir));
+  };
+  const double record_s = o.quick ? 10.0 : 30.0;
+
+  stage.next("Fig. 2: time responses of the paper's model");
+  std::vector<LabelledRecord> in, out;
+  for (double S : {0.2, 0.35, 0.6}) {
+    in.push_back({fmt::format("S1 = {} mm^2", S),
+                  run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
+    out.push_back({fmt::format("S2 = {} mm^2", S),
+                   run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
+  }
+  add(time_responses_figure(in, out));
+
+  stage.next("Fig. 7: the chaotic example and its indices");
+  const Scenario base = default_scenario();
+  const SimulationResult example = run(base, record_s);
+  const auto& v = example.series.channel("v").values;
+  const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
+  ModelLyapunovOptions lo;
+  lo.measure_s = o.quick ? 10.0 : 40.0;
+  const ModelLyapunovResult model = plant_lyapunov(Plant(base), lo);
+  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), a, model.running_time_s,
+                                               model.running_per_s)) {
+    add(f);
+  }
+
+  stage.next("Fig. 3: friction-velocity loops");
+  Scenario stick = base;
+  stick.circuit.S2_m2 = 0.05e-6;
+  add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example.series},
+                             {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
+                            o.quick ? 1.0 : 2.0));
+
+  // The maps' grid and run-to-run variation (docs/virtual_rig.md).
+  SweepSpec spec;
+  spec.base = base;
+  spec.base.variation.friction_rel_sd = 0.03;
+  spec.base.variation.texture_rel = 0.02;
+  spec.axes = o.quick ? std::vector<GridAxis>{parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
+                                              parse_grid_axis("circuit.S2_mm2=0.05:0.95:0.15")}
+                      : paper_valve_grid();
+  spec.repeats = o.quick ? 2 : 5;
+  if (o.quick) spec.base.run.duration_s = 5.0;
+
+  stage.next("stability map");
+  add(stability_map_figure(stability_map(base, spec.axes)));
+
+  struct Condition {
+    std::string name, title, key;
+    double value;
+  };
+  const std::vector<Condition> conditions = {
+      {"fig4_map_ps025_m15", "Fig. 4: Ps 0.25 MPa, m 1.5 kg", "", 0.0},
+      {"fig5_map_ps030_m15", "Fig. 5: Ps 0.30 MPa, m 1.5 kg", "supply.pressure_MPa", 0.30},
+      {"fig6_map_ps025_m30", "Fig. 6: Ps 0.25 MPa, m 3.0 kg", "load.mass_kg", 3.0},
+      {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg", 4.5}};
+  std::vector<SweepSummary> maps;
+  for (const Condition& c : conditions) {
+    stage.next("sweep: " + c.title);
+    SweepSpec s = spec;
+    if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
+    SweepOptions so;
+    so.out_dir = o.out_dir + "/sweeps/" + c.name.substr(c.name.find("map_") + 4);
+    so.threads = o.threads;
+    so.progress = o.progress;
+    // A second run of reproduce resumes (or re-reads) the sweeps of the first.
+    so.resume = true;
+    maps.push_back(run_sweep(s, so));
+    add(incidence_map_figure(c.name, c.title, s, maps.back()));
+  }
+
+  stage.next("claims and report");
+  ClaimInputs ci;
+  ci.spec = spec;
+  ci.base = maps[0];
+  ci.high_ps = maps[1];
+  ci.double_m = maps[2];
+  ci.triple_m = maps[3];
+  if (a.divergence.found_linear_region) {
+    ci.example_lambda = a.divergence.lambda_per_s;
+    ci.example_uncertainty = a.divergence.uncertainty_per_s;
+  }
+  if (model.ok) ci.example_model_lambda = model.lambda_per_s;
+  result.claims = evaluate_claims(ci);
+  const std::string settings = fmt::format(
+      "{} grid ({} x {} points), {} runs per point, {} s records, 3 % friction variation and a "
+      "2 % bore texture per run; chaotic example: {} s record.",
+      o.quick ? "quick" : "the paper's", spec.axes[0].values.size(), spec.axes[1].values.size(),
+      spec.repeats, spec.base.run.duration_s, record_s);
+  result.index_html = o.out_dir + "/index.html";
+  AtomicFile html(result.index_html);
+  html.stream() << report_html(result.figures, result.claims, scenario_to_toml(base), settings);
+  html.commit();
+  return result;
+}
+
+}  // namespace pneumachaos
