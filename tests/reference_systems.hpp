@@ -8,8 +8,20 @@
 
 namespace pneumachaos::testing {
 
-/// x'' = -omega^2 x; state (x, v); no events. Exact: x = x0 cos(omega t).
-class HarmonicOscillator final : public HybridSystem {
+/// A system without events or modes: only the derivative is left to define.
+class SmoothSystem : public HybridSystem {
+ public:
+  [[nodiscard]] std::size_t event_count(const Mode&) const override { return 0; }
+  void event_functions(const Mode&, std::span<const double>, double,
+                       std::span<double>) const override {}
+  EventOutcome apply_event(std::size_t, Mode&, std::span<double>, double) const override {
+    return {};
+  }
+  [[nodiscard]] Mode initial_mode(std::span<const double>, double) const override { return {}; }
+};
+
+/// x'' = -omega^2 x; state (x, v). Exact: x = x0 cos(omega t).
+class HarmonicOscillator final : public SmoothSystem {
  public:
   explicit HarmonicOscillator(double omega) : omega_(omega) {}
   [[nodiscard]] std::size_t state_size() const override { return 2; }
@@ -18,13 +30,6 @@ class HarmonicOscillator final : public HybridSystem {
     dxdt[0] = x[1];
     dxdt[1] = -omega_ * omega_ * x[0];
   }
-  [[nodiscard]] std::size_t event_count(const Mode&) const override { return 0; }
-  void event_functions(const Mode&, std::span<const double>, double,
-                       std::span<double>) const override {}
-  EventOutcome apply_event(std::size_t, Mode&, std::span<double>, double) const override {
-    return {};
-  }
-  [[nodiscard]] Mode initial_mode(std::span<const double>, double) const override { return {}; }
 
  private:
   double omega_;
@@ -32,7 +37,7 @@ class HarmonicOscillator final : public HybridSystem {
 
 /// Lorenz (sigma 10, rho 28, beta 8/3) as a hybrid system without events; largest exponent
 /// 0.9056 per time unit (Sprott, Chaos and Time-Series Analysis, 2003, table A.1).
-class LorenzSystem final : public HybridSystem {
+class LorenzSystem final : public SmoothSystem {
  public:
   [[nodiscard]] std::size_t state_size() const override { return 3; }
   void derivative(const Mode&, std::span<const double> s, std::span<double> d,
@@ -41,13 +46,6 @@ class LorenzSystem final : public HybridSystem {
     d[1] = s[0] * (28.0 - s[2]) - s[1];
     d[2] = s[0] * s[1] - 8.0 / 3.0 * s[2];
   }
-  [[nodiscard]] std::size_t event_count(const Mode&) const override { return 0; }
-  void event_functions(const Mode&, std::span<const double>, double,
-                       std::span<double>) const override {}
-  EventOutcome apply_event(std::size_t, Mode&, std::span<double>, double) const override {
-    return {};
-  }
-  [[nodiscard]] Mode initial_mode(std::span<const double>, double) const override { return {}; }
 };
 
 /// A block of mass m on a fixed floor with Coulomb friction (static Fs, kinetic Fc), pushed
