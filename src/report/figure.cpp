@@ -21,8 +21,10 @@ void write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-FigureFiles render_figure(const FigureSpec& spec, const std::string& dir) {
-  std::filesystem::create_directories(dir);
+FigureFiles render_figure(const FigureSpec& spec, const std::string& relative_dir) {
+  std::filesystem::create_directories(relative_dir);
+  // gnuplot runs inside the directory, so every path given to the shell must be absolute.
+  const std::string dir = std::filesystem::absolute(relative_dir).string();
   FigureFiles files{spec.name,
                     spec.caption,
                     spec.name + ".png",
