@@ -105,7 +105,7 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
       "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]'\n"
       "set palette defined (-1 'blue', 0 'white', 1 'red')\nset cbrange [-30:30]\n"
       "set view map\nset key off\n"
-      "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:2:($3 != $3 ? 0 : 1/0) "
+      "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:($3 != $3 ? $2 : 1/0) "
       "with points pt 2 lc 'black'";
   return f;
 }
