@@ -70,45 +70,51 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
   // Candidates for a neighbour: the nearest few dozen around the fiducial point, each placed
   // (aligned in time for flows) before its scale and orientation are judged.
   const std::size_t candidates = 40;
+  struct Candidate {
+    double time, distance, angle;
+  };
+  std::vector<Candidate> pool;
   const auto choose = [&](std::size_t fid, const std::vector<double>* old_sep, double& d_out) {
-    const auto near = index.k_nearest(fid, candidates, o.theiler);
-    double best = -1.0, best_angle = std::numeric_limits<double>::infinity();
-    double best_d = 0.0, nearest_ok = -1.0, nearest_d = std::numeric_limits<double>::infinity();
-    for (double scale = max_scale; best < 0.0 && scale <= 8.0 * max_scale; scale *= 2.0) {
-      for (const Neighbour& c : near) {
-        if (c.index >= usable || c.index < margin) continue;
-        const double j = place(fid, c.index);
-        const double d = separation(fid, j, cand);
-        if (d < min_scale) continue;
-        if (d < nearest_d) {
-          nearest_d = d;
-          nearest_ok = j;
-        }
-        if (d > scale) continue;
-        double angle = 0.0;
-        if (old_sep != nullptr) {
-          double dot = 0.0, norm = 0.0;
-          for (std::size_t k = 0; k < o.dimension; ++k) {
-            dot += cand[k] * (*old_sep)[k];
-            norm += (*old_sep)[k] * (*old_sep)[k];
-          }
-          angle = std::acos(std::clamp(dot / (d * std::sqrt(norm)), -1.0, 1.0));
-        } else {
-          angle = d;  // first neighbour: simply the nearest
-        }
-        if (angle < best_angle) {
-          best_angle = angle;
-          best = j;
-          best_d = d;
-        }
+    // Each candidate is placed (aligned in time for flows) and measured once.
+    pool.clear();
+    double old_norm = 0.0;
+    if (old_sep != nullptr) {
+      for (double c : *old_sep) old_norm += c * c;
+      old_norm = std::sqrt(old_norm);
+    }
+    for (const Neighbour& c : index.k_nearest(fid, candidates, o.theiler)) {
+      if (c.index >= usable || c.index < margin) continue;
+      const double j = place(fid, c.index);
+      const double d = separation(fid, j, cand);
+      if (d < min_scale) continue;
+      double angle = d;  // the first neighbour: simply the nearest
+      if (old_sep != nullptr) {
+        double dot = 0.0;
+        for (std::size_t k = 0; k < o.dimension; ++k) dot += cand[k] * (*old_sep)[k];
+        angle = std::acos(std::clamp(dot / (d * old_norm), -1.0, 1.0));
+      }
+      pool.push_back({j, d, angle});
+    }
+    if (pool.empty()) {
+      d_out = 0.0;
+      return -1.0;
+    }
+    // The best-oriented one within max_scale, widening the scale up to 8x when none is.
+    for (double scale = max_scale; scale <= 8.0 * max_scale; scale *= 2.0) {
+      const Candidate* best = nullptr;
+      for (const Candidate& c : pool) {
+        if (c.distance <= scale && (best == nullptr || c.angle < best->angle)) best = &c;
+      }
+      if (best != nullptr) {
+        d_out = best->distance;
+        return best->time;
       }
     }
-    if (best < 0.0) {  // nothing within the scales: the nearest one above min_scale, if any
-      best = nearest_ok;
-      best_d = nearest_d;
-    }
-    d_out = best_d;
-    return best;
+    const auto nearest =
+        std::min_element(pool.begin(), pool.end(),
+                         [](const auto& a, const auto& b) { return a.distance < b.distance; });
+    d_out = nearest->distance;
+    return nearest->time;
   };
 
   // A freshly chosen neighbour is close partly by coincidence of the delay coordinates; its
