@@ -54,21 +54,23 @@ std::vector<double> flow_x(Rhs rhs, std::array<double, 3> s, double dt, std::siz
 }
 
 /// Lorenz sigma = 10, rho = 28, beta = 8/3; lambda ~ 0.906 per time unit (Sprott 2003, A.1).
-inline std::vector<double> lorenz_x(std::size_t n, double dt = 0.01) {
+inline std::vector<double> lorenz_x(std::size_t n, double dt = 0.01,
+                                    std::array<double, 3> start = {1.0, 1.0, 20.0}) {
   return flow_x(
       [](const std::array<double, 3>& s, std::array<double, 3>& d, double) {
         d = {10.0 * (s[1] - s[0]), s[0] * (28.0 - s[2]) - s[1], s[0] * s[1] - 8.0 / 3.0 * s[2]};
       },
-      {1.0, 1.0, 20.0}, dt, n, static_cast<std::size_t>(50.0 / dt));
+      start, dt, n, static_cast<std::size_t>(50.0 / dt));
 }
 
 /// Rossler a = b = 0.2, c = 5.7; lambda ~ 0.0714 per time unit (Sprott 2003, A.1).
-inline std::vector<double> rossler_x(std::size_t n, double dt = 0.1) {
+inline std::vector<double> rossler_x(std::size_t n, double dt = 0.1,
+                                     std::array<double, 3> start = {1.0, 1.0, 0.0}) {
   return flow_x(
       [](const std::array<double, 3>& s, std::array<double, 3>& d, double) {
         d = {-s[1] - s[2], s[0] + 0.2 * s[1], 0.2 + s[2] * (s[0] - 5.7)};
       },
-      {1.0, 1.0, 0.0}, dt, n, static_cast<std::size_t>(200.0 / dt));
+      start, dt, n, static_cast<std::size_t>(200.0 / dt));
 }
 
 inline std::vector<double> sine(std::size_t n, double f_Hz, double rate_Hz, double noise = 0.0,
