@@ -39,10 +39,9 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
   const std::size_t margin = aligned ? 2 : 0;
   const std::size_t usable = e.size() - evolve - margin;
   const NeighbourIndex index(e, usable, std::max(repeat_resolution(x), min_scale));
-  // Replacement scale: as small as the data density allows (Wolf et al.: the smaller the
-  // better while neighbours remain), a multiple of the median nearest-neighbour distance.
-  double max_scale = o.max_scale;
-  if (!(max_scale > 0.0)) {
+  const bool flow = is_oversampled_flow(o.delay);
+  // Scales follow the data density: the median nearest-neighbour distance, sampled.
+  const auto median_nn = [&] {
     std::vector<double> nn;
     for (std::size_t i = margin; i < usable; i += std::max<std::size_t>(1, usable / 300)) {
       const Neighbour nb = index.nearest(i, o.theiler);
@@ -50,8 +49,19 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
     }
     if (nn.empty()) throw Error("wolf", "no neighbours outside the Theiler window");
     std::nth_element(nn.begin(), nn.begin() + nn.size() / 2, nn.end());
-    max_scale = o.scale_factor * nn[nn.size() / 2];
-  }
+    return nn[nn.size() / 2];
+  };
+  const double nn_scale =
+      o.max_scale > 0.0 && (o.candidate_scale > 0.0 || !flow) ? 0.0 : median_nn();
+  // Replacement scale: as small as the data density allows (Wolf et al.: the smaller the
+  // better while neighbours remain).
+  const double max_scale = o.max_scale > 0.0 ? o.max_scale : o.scale_factor * nn_scale;
+  // Replacement candidates: for flows the closest ones (a farther start leaves the linear
+  // regime sooner, while the settling period below aligns the orientation anyway); for maps
+  // the best-oriented within max_scale.
+  const double candidate_scale = o.candidate_scale > 0.0 ? o.candidate_scale
+                                 : flow                  ? nn_scale
+                                                         : max_scale;
   std::vector<double> sep(o.dimension), cand(o.dimension);
   // Separation vector from fiducial point i to the neighbour at (fractional) time j.
   const auto separation = [&](std::size_t i, double j, std::vector<double>& out) {
@@ -130,14 +140,7 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
   // replacement is chosen when the measured pair reaches max_scale and settles while the
   // old pair is still measured; the old pair hands over once the new one has settled.
   // Maps need no settling: a replacement takes over at once, as in Wolf's program.
-  const bool flow = is_oversampled_flow(o.delay);
   const std::size_t settle = o.settle > 0 ? o.settle : flow ? period : 0;
-  // Replacement candidates: for flows the closest ones (a farther start leaves the linear
-  // regime sooner, while the settling period aligns the orientation anyway); for maps the
-  // best-oriented within max_scale.
-  const double candidate_scale = o.candidate_scale > 0.0 ? o.candidate_scale
-                                 : flow                  ? max_scale / o.scale_factor
-                                                         : max_scale;
   struct Pair {
     double time = -1.0;  ///< (fractional) index of the neighbour; < 0: none
     std::size_t age = 0;
