@@ -1,14 +1,34 @@
 #include "pneumachaos/analysis/continuous_alignment.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
+#include "pneumachaos/core/error.hpp"
+
 namespace pneumachaos {
 
+namespace {
+
+// The first sample of the stencil for fractional index t (`needed` samples read from there
+// on), kept inside the record: near either end the cubic through the four end samples is
+// used (still exact at the samples), so no caller's margin can make it read outside.
+std::size_t stencil_start(double t, std::size_t n, std::size_t needed) {
+  if (n < needed) {
+    throw Error("interpolation", fmt::format("{} samples: at least {} are needed", n, needed));
+  }
+  const double first = std::floor(t) - 1.0;
+  const double last = static_cast<double>(n - needed);
+  return static_cast<std::size_t>(std::clamp(first, 0.0, last));
+}
+
+}  // namespace
+
 double interpolate_series(std::span<const double> x, double t) {
-  const auto i = static_cast<std::size_t>(std::floor(t));
-  const double u = t - static_cast<double>(i);
-  const double p0 = x[i - 1], p1 = x[i], p2 = x[i + 1], p3 = x[i + 2];
+  const std::size_t s = stencil_start(t, x.size(), 4);
+  const double u = t - static_cast<double>(s + 1);
+  const double p0 = x[s], p1 = x[s + 1], p2 = x[s + 2], p3 = x[s + 3];
   return p1 + 0.5 * u *
                   (p2 - p0 +
                    u * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + u * (3.0 * (p1 - p2) + p3 - p0)));
@@ -16,16 +36,17 @@ double interpolate_series(std::span<const double> x, double t) {
 
 std::span<const double> shifted_series(std::span<const double> x, std::size_t j, double s,
                                        std::size_t count, std::vector<double>& buffer) {
-  // t = j + s = base + u with 0 <= u < 1; Lagrange weights of the cubic through base-1..base+2.
+  // t = j + s = base + u; Lagrange weights of the cubic through base-1..base+2, the stencil
+  // kept inside the record (u then lies in [-1, 2), still interpolating or exact at a node).
   const double t = static_cast<double>(j) + s;
-  const auto base = static_cast<std::size_t>(std::floor(t));
-  const double u = t - static_cast<double>(base);
+  const std::size_t start = stencil_start(t, x.size(), count + 3);
+  const double u = t - static_cast<double>(start + 1);
   const double w0 = -u * (u - 1.0) * (u - 2.0) / 6.0;
   const double w1 = (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0;
   const double w2 = -(u + 1.0) * u * (u - 2.0) / 2.0;
   const double w3 = (u + 1.0) * u * (u - 1.0) / 6.0;
   buffer.resize(count);
-  const double* p = x.data() + base - 1;
+  const double* p = x.data() + start;
   for (std::size_t k = 0; k < count; ++k) {
     buffer[k] = w0 * p[k] + w1 * p[k + 1] + w2 * p[k + 2] + w3 * p[k + 3];
   }

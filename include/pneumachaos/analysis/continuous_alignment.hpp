@@ -12,7 +12,8 @@
 
 namespace pneumachaos {
 
-/// Cubic Lagrange interpolation of x at fractional index t, 1 <= t <= size - 3.
+/// Cubic interpolation of x at fractional index t; within one sample of either end the
+/// cubic through the four end samples is extended (no read outside the record).
 double interpolate_series(std::span<const double> x, double t);
 
 /// Coordinate d of the delay vector at fractional index t.

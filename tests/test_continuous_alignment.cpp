@@ -1,0 +1,63 @@
+// Interpolation between samples never reads outside the record (issue: a heap-buffer overflow
+// at the record's end reached from both Lyapunov estimators).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "pneumachaos/analysis/continuous_alignment.hpp"
+
+namespace pneumachaos {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A record of n samples of a parabola (which both cubic interpolants reproduce exactly), fenced by
+// a NaN on either side: a read outside the record turns the result into NaN, even in a build
+// without sanitizers.
+struct FencedParabola {
+  std::vector<double> storage;
+  explicit FencedParabola(std::size_t n) : storage(n + 2, kNaN) {
+    for (std::size_t i = 0; i < n; ++i) storage[i + 1] = value(static_cast<double>(i));
+  }
+  static double value(double t) { return -0.03 * t * t + 2.0 * t - 1.0; }
+  [[nodiscard]] std::span<const double> record() const {
+    return {storage.data() + 1, storage.size() - 2};
+  }
+};
+
+TEST(ContinuousAlignment, InterpolationStaysInsideTheRecordAtBothEnds) {
+  const FencedParabola c(40);
+  const auto x = c.record();
+  for (double t : {0.0, 0.25, 1.0, 1.5, 37.5, 38.0, 38.75, 39.0}) {
+    EXPECT_NEAR(interpolate_series(x, t), FencedParabola::value(t), 1e-9) << "t = " << t;
+  }
+}
+
+TEST(ContinuousAlignment, ShiftedSeriesReachingTheLastSampleStaysInside) {
+  const FencedParabola c(40);
+  const auto x = c.record();
+  std::vector<double> buffer;
+  // The neighbour at j = 30 shifted by a whole sample reads up to sample 39, the last one:
+  // the four-point stencil must not reach sample 40.
+  for (double s : {1.0, 0.5, -1.0}) {
+    const std::size_t count = s > 0.0 ? 9 : 10;
+    const auto shifted = shifted_series(x, 30, s, count, buffer);
+    for (std::size_t k = 0; k < count; ++k) {
+      EXPECT_NEAR(shifted[k], FencedParabola::value(30.0 + s + static_cast<double>(k)), 1e-9)
+          << "s = " << s << ", k = " << k;
+    }
+  }
+  EXPECT_NEAR(shifted_series(x, 1, -1.0, 5, buffer)[0], FencedParabola::value(0.0), 1e-9);
+}
+
+TEST(ContinuousAlignment, TooShortARecordIsAnError) {
+  const FencedParabola c(3);
+  std::vector<double> buffer;
+  EXPECT_THROW(interpolate_series(c.record(), 1.0), std::exception);
+  EXPECT_THROW(shifted_series(c.record(), 0, 0.0, 2, buffer), std::exception);
+}
+
+}  // namespace
+}  // namespace pneumachaos
