@@ -133,6 +133,79 @@ TEST(Sweep, ResumeSkipsFinishedRunsCutsATornLineAndRefusesAnotherSpec) {
   std::filesystem::remove_all(part);
 }
 
+// A journal as a kill leaves it: header, `runs` finished lines and a torn line.
+std::string torn_journal(const std::string& journal, int runs) {
+  std::size_t cut = 0;
+  for (int lines = 0; lines < runs + 1; ++lines) cut = journal.find('\n', cut) + 1;
+  return journal.substr(0, cut) + "1,0,123,1,dur";
+}
+
+TEST(Sweep, ATrailingSlashOnTheDirectoryStillCutsTheTornLine) {
+  const SweepSpec spec = small_spec();
+  const std::string full = temp_dir("slash_full"), part = temp_dir("slash_part");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = full;
+  run_sweep(spec, o);
+  std::filesystem::create_directories(part);
+  std::ofstream(part + "/journal.csv", std::ios::binary)
+      << torn_journal(slurp(full + "/journal.csv"), 2);
+  o.out_dir = part + "/";
+  o.resume = true;
+  run_sweep(spec, o);
+  // Before the fix the torn tail stayed and the next record was glued to it: this second
+  // resume then failed on a line with too many fields.
+  EXPECT_NO_THROW(run_sweep(spec, o));
+  EXPECT_EQ(slurp(full + "/runs.csv"), slurp(part + "/runs.csv"));
+  std::filesystem::remove_all(full);
+  std::filesystem::remove_all(part);
+}
+
+std::string resume_error(const SweepSpec& spec, const std::string& dir) {
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = dir;
+  o.resume = true;
+  try {
+    run_sweep(spec, o);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Sweep, ARunRecordedTwiceIsRefusedAsTwoWriters) {
+  const SweepSpec spec = small_spec();
+  const std::string dir = temp_dir("twice");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = dir;
+  run_sweep(spec, o);
+  const std::string journal = slurp(dir + "/journal.csv");
+  const std::size_t second = journal.find('\n') + 1;
+  const std::string first_run = journal.substr(second, journal.find('\n', second) + 1 - second);
+  std::ofstream(dir + "/journal.csv", std::ios::app | std::ios::binary) << first_run;
+  const std::string message = resume_error(spec, dir);
+  EXPECT_NE(message.find("journal.csv:8: point 0 repeat 0 was already recorded at"),
+            std::string::npos) << message;
+  EXPECT_NE(message.find("two sweeps"), std::string::npos) << message;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Sweep, AJournalWithoutItsHeaderIsCalledDamagedNotForeign) {
+  const SweepSpec spec = small_spec();
+  const std::string dir = temp_dir("headless");
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = dir;
+  run_sweep(spec, o);
+  const std::string journal = slurp(dir + "/journal.csv");
+  std::ofstream(dir + "/journal.csv", std::ios::binary) << journal.substr(journal.find('\n') + 1);
+  const std::string message = resume_error(spec, dir);
+  EXPECT_NE(message.find("journal.csv:1: the journal is damaged"), std::string::npos) << message;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Sweep, AFailedRunIsRecordedAndTheSweepGoesOn) {
   SweepSpec spec = small_spec();
   spec.axes = {parse_grid_axis("cylinder.rod_mm=30:50:10")};  // 40 and 50 mm are not < bore

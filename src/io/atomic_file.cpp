@@ -22,11 +22,11 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::commit() {
   out_.flush();
-  if (!out_) throw Error(path_, "write failed (disk full?)");
+  if (!out_) throw RunError(path_, "write failed (disk full?)");
   out_.close();
   std::error_code ec;
   std::filesystem::rename(temp_, path_, ec);
-  if (ec) throw Error(path_, "cannot move the finished file into place: " + ec.message());
+  if (ec) throw RunError(path_, "cannot move the finished file into place: " + ec.message());
   committed_ = true;
 }
 

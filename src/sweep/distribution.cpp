@@ -52,6 +52,17 @@ void Distribution::barrier() const {
 #endif
 }
 
+bool Distribution::all_ok(bool ok) const {
+#ifdef PNEUMACHAOS_HAVE_MPI
+  if (size_ > 1) {
+    int mine = ok ? 1 : 0, all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+    return all != 0;
+  }
+#endif
+  return ok;
+}
+
 bool Distribution::built_with_mpi() {
 #ifdef PNEUMACHAOS_HAVE_MPI
   return true;

@@ -12,6 +12,9 @@ class Distribution {
   [[nodiscard]] int size() const { return size_; }
   /// Waits for every rank (no-op without MPI).
   void barrier() const;
+  /// Waits for every rank and tells whether all of them passed `ok` = true: a barrier that a
+  /// failed rank still reaches, so no rank waits forever for one that threw.
+  [[nodiscard]] bool all_ok(bool ok) const;
   /// Whether this binary was built with MPI support.
   static bool built_with_mpi();
 

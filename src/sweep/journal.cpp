@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
@@ -14,15 +15,30 @@ namespace pneumachaos::detail {
 
 namespace {
 
-std::string header_of(const std::string& fingerprint) {
-  return "# pneumachaos sweep journal, spec " + fingerprint;
+constexpr const char* kHeaderStart = "# pneumachaos sweep journal, spec ";
+
+std::string header_of(const std::string& fingerprint) { return kHeaderStart + fingerprint; }
+
+// The first line must be this sweep's header; a journal of another sweep and a damaged one
+// (no header at all) are refused with different words, since the remedies differ.
+void check_header(const std::string& line, const std::string& path,
+                  const std::string& fingerprint) {
+  if (line == header_of(fingerprint)) return;
+  if (line.rfind(kHeaderStart, 0) == 0) {
+    throw Error(path,
+                "the journal belongs to a different sweep (another scenario, grid, repeats or "
+                "seed); refusing to resume into it");
+  }
+  throw Error(fmt::format("{}:1", path),
+              "the journal is damaged: its first line is not a pneumachaos journal header; "
+              "move it away and run the sweep again");
 }
 
-// Records of one journal file; `cut` truncates a torn tail (only for the own file: another
-// rank may be writing its tail right now).
-std::vector<RunRecord> read_journal(const std::string& path, const std::string& fingerprint,
-                                    bool cut) {
+// The text up to the last complete line; `cut` truncates a torn tail in the file too (only
+// for the own file: another rank may be writing its tail right now).
+std::string complete_lines(const std::string& path, bool cut) {
   std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path, "cannot read the journal");
   std::stringstream text;
   text << in.rdbuf();
   std::string all = text.str();
@@ -32,28 +48,40 @@ std::vector<RunRecord> read_journal(const std::string& path, const std::string& 
     all.resize(keep);
     if (cut) std::filesystem::resize_file(path, keep);
   }
-  std::vector<RunRecord> records;
-  std::istringstream lines(all);
+  return all;
+}
+
+}  // namespace
+
+void JournalReader::read(const std::string& path, bool cut) {
+  std::istringstream lines(complete_lines(path, cut));
   std::string line;
   std::size_t n = 0;
   while (std::getline(lines, line)) {
     ++n;
     if (n == 1) {
-      if (line != header_of(fingerprint)) {
-        throw Error(path,
-                    "the journal belongs to a different sweep (another scenario, grid, "
-                    "repeats or seed); refusing to resume into it");
-      }
+      check_header(line, path, fingerprint_);
       continue;
     }
+    const std::string where = fmt::format("{}:{}", path, n);
+    RunRecord r;
     try {
-      records.push_back(RunRecord::decode(line));
+      r = RunRecord::decode(line);
     } catch (const Error& e) {
-      throw Error(fmt::format("{}:{}", path, n), e.what());
+      throw Error(where, e.what());
     }
+    // One run is written once; a second copy means two sweeps wrote into one directory.
+    const auto [it, fresh] = origin_.emplace(std::make_pair(r.point, r.repeat), where);
+    if (!fresh) {
+      throw Error(where, fmt::format("point {} repeat {} was already recorded at {}: two "
+                                     "sweeps have written into this directory",
+                                     r.point, r.repeat, it->second));
+    }
+    records_.push_back(std::move(r));
   }
-  return records;
 }
+
+namespace {
 
 std::vector<std::string> journal_files(const std::string& dir) {
   std::vector<std::string> files;
@@ -70,46 +98,40 @@ std::vector<std::string> journal_files(const std::string& dir) {
 }  // namespace
 
 std::vector<RunRecord> Journal::read_all(const std::string& dir, const std::string& fingerprint) {
-  std::vector<RunRecord> all;
-  for (const auto& f : journal_files(dir)) {
-    auto r = read_journal(f, fingerprint, false);
-    all.insert(all.end(), r.begin(), r.end());
-  }
-  return all;
+  JournalReader reader(fingerprint);
+  for (const auto& f : journal_files(dir)) reader.read(f, false);
+  return std::move(reader).records();
 }
 
 Journal::Journal(const std::string& dir, const std::string& own_name,
                  const std::string& fingerprint, bool resume)
-    : path_(dir + "/" + own_name) {
+    : path_((std::filesystem::path(dir) / own_name).string()) {
   const auto files = journal_files(dir);
   if (!files.empty() && !resume) {
     throw Error(dir,
                 "this directory already holds a sweep: add --resume to finish it, or "
                 "choose another --out");
   }
-  for (const auto& f : files) {
-    auto r = read_journal(f, fingerprint, f == path_);
-    existing_.insert(existing_.end(), r.begin(), r.end());
-  }
+  JournalReader reader(fingerprint);
+  // Compared by name: "DIR/" and "DIR" must find the same own journal, so its torn tail is cut.
+  for (const auto& f : files) reader.read(f, std::filesystem::path(f).filename() == own_name);
+  existing_ = std::move(reader).records();
   const bool fresh = !std::filesystem::exists(path_) || std::filesystem::file_size(path_) == 0;
   file_ = std::fopen(path_.c_str(), "ab");
   if (file_ == nullptr) throw Error(path_, "cannot open the journal for writing");
-  if (fresh) {
-    std::fputs((header_of(fingerprint) + "\n").c_str(), file_);
-    std::fflush(file_);
-    ::fsync(::fileno(file_));
-  }
+  if (fresh) write_line(header_of(fingerprint) + "\n");
 }
 
 Journal::~Journal() {
   if (file_ != nullptr) std::fclose(file_);
 }
 
-void Journal::append(const RunRecord& record) {
-  const std::string line = record.encode() + "\n";
+void Journal::append(const RunRecord& record) { write_line(record.encode() + "\n"); }
+
+void Journal::write_line(const std::string& line) {
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0 ||
       ::fsync(::fileno(file_)) != 0) {
-    throw Error(path_, "cannot append to the journal (disk full?)");
+    throw RunError(path_, "cannot append to the journal (disk full?)");
   }
 }
 

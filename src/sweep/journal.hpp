@@ -2,12 +2,29 @@
 // The append-only journal of finished runs (private to the sweep module).
 
 #include <cstdio>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos::detail {
+
+/// Reads journal files of one sweep, refusing a foreign or damaged header and a run recorded
+/// twice (two writers), and naming file:line in every error.
+class JournalReader {
+ public:
+  explicit JournalReader(std::string fingerprint) : fingerprint_(std::move(fingerprint)) {}
+  /// Adds the complete lines of `path`; `cut` also truncates a torn last line in the file.
+  void read(const std::string& path, bool cut);
+  [[nodiscard]] std::vector<RunRecord> records() && { return std::move(records_); }
+
+ private:
+  std::string fingerprint_;
+  std::vector<RunRecord> records_;
+  std::map<std::pair<std::size_t, std::size_t>, std::string> origin_;  // (point, repeat) -> file:line
+};
 
 class Journal {
  public:
@@ -30,6 +47,7 @@ class Journal {
   void append(const RunRecord& record);
 
  private:
+  void write_line(const std::string& line);
   std::string path_;
   std::FILE* file_ = nullptr;
   std::vector<RunRecord> existing_;

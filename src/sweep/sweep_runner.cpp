@@ -7,12 +7,14 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <thread>
 
 #include "distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "sweep_outputs.hpp"
 
 namespace pneumachaos {
@@ -22,6 +24,147 @@ bool sweeps_support_mpi() { return detail::Distribution::built_with_mpi(); }
 void SweepOptions::validate() const {
   if (out_dir.empty()) throw Error("--out", "a directory for the results is required");
 }
+
+namespace {
+
+// Runs on one rank may throw; every rank must still reach each collective step, so a
+// failure is held until all ranks have agreed that one happened, then rethrown.
+class RankFailure {
+ public:
+  template <typename F>
+  void attempt(F&& f) {
+    if (failure_) return;
+    try {
+      f();
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+  }
+  void agree(const detail::Distribution& dist, const std::string& dir) {
+    const bool all_ok = dist.all_ok(!failure_);
+    if (failure_) std::rethrow_exception(failure_);
+    if (!all_ok) throw RunError(dir, "another MPI rank failed; its message says why");
+  }
+
+ private:
+  std::exception_ptr failure_;
+};
+
+// Indices of the runs the journal already holds; a run outside the grid means the journal
+// does not belong to this grid.
+std::vector<char> finished_runs(const SweepSpec& spec, const std::vector<RunRecord>& existing,
+                                const std::string& dir) {
+  std::vector<char> done(spec.runs(), 0);
+  for (const RunRecord& r : existing) {
+    const std::size_t i = r.index(spec.repeats);
+    if (r.repeat >= spec.repeats || i >= done.size())
+      throw Error(dir, "the journal holds a run outside the grid");
+    done[i] = 1;
+  }
+  return done;
+}
+
+// Under MPI each rank takes the runs whose index matches its rank.
+std::vector<std::size_t> pending_runs(const std::vector<char>& done,
+                                      const detail::Distribution& dist) {
+  std::vector<std::size_t> pending;
+  const auto ranks = static_cast<std::size_t>(dist.size());
+  for (std::size_t i = 0; i < done.size(); ++i) {
+    if (!done[i] && i % ranks == static_cast<std::size_t>(dist.rank())) pending.push_back(i);
+  }
+  return pending;
+}
+
+std::size_t thread_count(std::size_t requested, std::size_t work,
+                         const detail::Distribution& dist) {
+  const std::size_t hardware = std::max<std::size_t>(
+      1, std::thread::hardware_concurrency() / static_cast<std::size_t>(dist.size()));
+  return std::max<std::size_t>(
+      1, std::min(requested > 0 ? requested : hardware, std::max<std::size_t>(work, 1)));
+}
+
+// run_one turns bad input into a failed record; anything else it lets escape (a bug, memory
+// exhaustion) becomes a failed record here too, so a worker thread never terminates the
+// process and the other runs are kept.
+RunRecord guarded_run(const SweepSpec& spec, std::size_t i) {
+  try {
+    return run_one(spec, i / spec.repeats, i % spec.repeats);
+  } catch (const std::exception& e) {
+    RunRecord r;
+    r.point = i / spec.repeats;
+    r.repeat = i % spec.repeats;
+    r.seed = run_seed(spec.seed, r.point, r.repeat);
+    r.ok = false;
+    r.reason = std::string("internal error: ") + e.what();
+    return r;
+  }
+}
+
+class Progress {
+ public:
+  Progress(bool show, std::size_t total, std::size_t already)
+      : show_(show), total_(total), already_(already) {}
+  void update(std::size_t finished, std::size_t pending) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!show_ || (now - last_ < std::chrono::milliseconds(200) && finished != pending)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - started_).count();
+    const double rate = finished / std::max(elapsed, 1e-9);
+    fmt::print(stderr, "\rsweep: {}/{} runs, {:.1f} runs/s, ETA {:.0f} s   ",
+               already_ + finished, total_, rate, (pending - finished) / std::max(rate, 1e-9));
+  }
+  ~Progress() {
+    if (show_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  bool show_;
+  std::size_t total_, already_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_{};
+};
+
+// Runs `pending` on threads, journaling each finished run; stops taking new runs after the
+// journal fails and rethrows that failure.
+void run_pending(const SweepSpec& spec, const SweepOptions& options,
+                 const std::vector<std::size_t>& pending, detail::Journal& journal,
+                 std::vector<RunRecord>& records, const detail::Distribution& dist) {
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::size_t finished = 0;
+  std::exception_ptr failure;
+  Progress progress(options.progress && ::isatty(STDERR_FILENO) != 0, spec.runs(),
+                    spec.runs() - pending.size());
+  const auto worker = [&] {
+    for (std::size_t k = next++; k < pending.size(); k = next++) {
+      RunRecord r = guarded_run(spec, pending[k]);
+      std::lock_guard<std::mutex> lock(mutex);
+      if (failure) return;
+      try {
+        journal.append(r);
+      } catch (...) {
+        failure = std::current_exception();
+        return;
+      }
+      records.push_back(std::move(r));
+      progress.update(++finished, pending.size());
+    }
+  };
+  std::vector<std::thread> pool;
+  const std::size_t threads = thread_count(options.threads, pending.size(), dist);
+  for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+// Every rank's runs are in its journal once all have finished; read them all back.
+std::vector<RunRecord> merged_records(const SweepSpec& spec, const std::string& dir) {
+  std::vector<RunRecord> records = detail::Journal::read_all(dir, spec.fingerprint());
+  if (records.size() != spec.runs()) throw RunError(dir, "the ranks' journals are incomplete");
+  return records;
+}
+
+}  // namespace
 
 SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   spec.validate();
@@ -34,94 +177,31 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
       dist.size() == 1 ? "journal.csv" : fmt::format("journal.rank{}.csv", dist.rank());
   // Every rank reads the journals before any rank appends to them.
   dist.barrier();
-  detail::Journal journal(options.out_dir, own, spec.fingerprint(), options.resume);
-  dist.barrier();
-
-  const std::size_t total = spec.runs();
-  std::vector<char> done(total, 0);
+  RankFailure failure;
+  std::unique_ptr<detail::Journal> journal;
   std::vector<RunRecord> records;
-  for (const RunRecord& r : journal.existing()) {
-    const std::size_t i = r.index(spec.repeats);
-    if (r.repeat >= spec.repeats || i >= total)
-      throw Error(options.out_dir, "the journal holds a run outside the grid");
-    if (done[i]) continue;  // a duplicate line cannot arise, but must not count twice
-    done[i] = 1;
-    records.push_back(r);
-  }
-  std::vector<std::size_t> pending;
-  for (std::size_t i = 0; i < total; ++i) {
-    // Under MPI each rank takes the runs whose index matches its rank.
-    if (!done[i] &&
-        i % static_cast<std::size_t>(dist.size()) == static_cast<std::size_t>(dist.rank())) {
-      pending.push_back(i);
-    }
-  }
-
-  const std::size_t hardware = std::max<std::size_t>(
-      1, std::thread::hardware_concurrency() / static_cast<std::size_t>(dist.size()));
-  const std::size_t threads =
-      std::max<std::size_t>(1, std::min(options.threads > 0 ? options.threads : hardware,
-                                        std::max<std::size_t>(pending.size(), 1)));
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::size_t finished = 0;
-  const bool show = options.progress && ::isatty(STDERR_FILENO) != 0;
-  const auto started = std::chrono::steady_clock::now();
-  auto last_shown = started;
-  std::exception_ptr failure;
-  const auto worker = [&] {
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const std::size_t i = pending[k];
-      RunRecord r = run_one(spec, i / spec.repeats, i % spec.repeats);
-      std::lock_guard<std::mutex> lock(mutex);
-      if (failure) return;
-      try {
-        journal.append(r);
-      } catch (...) {
-        failure = std::current_exception();
-        return;
-      }
-      records.push_back(std::move(r));
-      ++finished;
-      const auto now = std::chrono::steady_clock::now();
-      if (show &&
-          (now - last_shown > std::chrono::milliseconds(200) || finished == pending.size())) {
-        last_shown = now;
-        const double elapsed = std::chrono::duration<double>(now - started).count();
-        const double rate = finished / std::max(elapsed, 1e-9);
-        fmt::print(stderr, "\rsweep: {}/{} runs, {:.1f} runs/s, ETA {:.0f} s   ",
-                   total - pending.size() + finished, total, rate,
-                   (pending.size() - finished) / std::max(rate, 1e-9));
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-  if (show) fmt::print(stderr, "\n");
-  if (failure) std::rethrow_exception(failure);
-  if (dist.size() > 1) {
-    // Every rank's runs are in its journal once all have arrived here; rank 0 writes.
-    dist.barrier();
-    records.clear();
-    std::vector<char> seen(total, 0);
-    for (RunRecord& r : detail::Journal::read_all(options.out_dir, spec.fingerprint())) {
-      const std::size_t i = r.index(spec.repeats);
-      if (i < total && !seen[i]) {
-        seen[i] = 1;
-        records.push_back(std::move(r));
-      }
-    }
-    if (records.size() != total) throw Error(options.out_dir, "the ranks' journals are incomplete");
-  }
-
-  std::sort(records.begin(), records.end(), [&](const RunRecord& a, const RunRecord& b) {
-    return a.index(spec.repeats) < b.index(spec.repeats);
+  failure.attempt([&] {
+    journal = std::make_unique<detail::Journal>(options.out_dir, own, spec.fingerprint(),
+                                                options.resume);
+    records = journal->existing();
   });
-  SweepSummary summary = summarize(spec, records);
-  summary.wrote_files = dist.rank() == 0;
-  if (summary.wrote_files) detail::write_sweep_outputs(spec, records, summary, options.out_dir);
-  dist.barrier();
+  failure.agree(dist, options.out_dir);
+  failure.attempt([&] {
+    const auto pending = pending_runs(finished_runs(spec, records, options.out_dir), dist);
+    run_pending(spec, options, pending, *journal, records, dist);
+  });
+  failure.agree(dist, options.out_dir);
+  SweepSummary summary;
+  failure.attempt([&] {
+    if (dist.size() > 1) records = merged_records(spec, options.out_dir);
+    std::sort(records.begin(), records.end(), [&](const RunRecord& a, const RunRecord& b) {
+      return a.index(spec.repeats) < b.index(spec.repeats);
+    });
+    summary = summarize(spec, records);
+    summary.wrote_files = dist.rank() == 0;
+    if (summary.wrote_files) detail::write_sweep_outputs(spec, records, summary, options.out_dir);
+  });
+  failure.agree(dist, options.out_dir);
   return summary;
 }
 

@@ -18,4 +18,11 @@ class Error : public std::runtime_error {
   std::string where_;
 };
 
+/// Raised when a run with valid input cannot complete: an output that cannot be written (a
+/// full disk), a computation that failed. The CLI exits 3 for these, 2 for other Errors.
+class RunError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace pneumachaos
