@@ -5,11 +5,25 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/analysis_output.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 
 namespace pneumachaos::cli {
+namespace {
+
+// The analysis knows only a series; its errors gain the file and column they concern.
+AnalysisResult analyzed(const Channel& channel, double rate_Hz, const AnalysisOptions& options,
+                        const std::string& file) {
+  try {
+    return analyze_series(channel.values, rate_Hz, options);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}, column {}", file, channel.name), e.what());
+  }
+}
+
+}  // namespace
 
 Action add_analyze(CLI::App& app) {
   struct Args {
@@ -44,7 +58,7 @@ Action add_analyze(CLI::App& app) {
     const Channel& channel = series.channels().front();
     AnalysisOptions options;
     options.wolf = !args->no_wolf;
-    const AnalysisResult r = analyze_series(channel.values, series.rate_Hz(), options);
+    const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
     if (!args->json.empty()) {
       AtomicFile f(args->json);

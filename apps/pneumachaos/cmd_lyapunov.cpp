@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "commands.hpp"
+#include "flag_names.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
@@ -41,7 +42,15 @@ Action add_lyapunov(CLI::App& app) {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     const Plant plant(scenario);
     const ModelLyapunovOptions& o = args->o;
-    const ModelLyapunovResult r = plant_lyapunov(plant, o, args->tolerance_factor);
+    if (!(std::isfinite(args->tolerance_factor) && args->tolerance_factor > 0.0)) {
+      throw Error("--tolerance-factor", "must be a positive number");
+    }
+    const FlagNames flags{{"lyapunov.measure_s", "--measure"},
+                          {"lyapunov.renormalize_s", "--renormalize"},
+                          {"lyapunov.transient_s", "--transient"},
+                          {"lyapunov.separation", "--separation"}};
+    const ModelLyapunovResult r =
+        with_flag_names(flags, [&] { return plant_lyapunov(plant, o, args->tolerance_factor); });
     if (!r.ok) {
       fmt::print(stderr, "lyapunov: {}\n", r.message);
       return kExitRunFailed;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <optional>
 
 #include "commands.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -18,7 +19,7 @@ Action add_stability(CLI::App& app) {
     std::vector<std::string> grids;
     bool json = false;
     bool map = false;
-    double position_mm = -1.0;
+    std::optional<double> position_mm;
     std::string output;
   };
   auto args = std::make_shared<Args>();
@@ -37,7 +38,15 @@ Action add_stability(CLI::App& app) {
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     StabilityOptions options;
-    if (args->position_mm >= 0.0) options.equilibrium.position_m = args->position_mm * 1e-3;
+    if (args->position_mm) {
+      const double stroke_mm = scenario.cylinder.stroke_m * 1e3;
+      if (!(*args->position_mm >= 0.0 && *args->position_mm <= stroke_mm)) {
+        throw Error("--position-mm",
+                    fmt::format("{} mm is not a piston position: expected 0 to the stroke, {} mm",
+                                *args->position_mm, stroke_mm));
+      }
+      options.equilibrium.position_m = *args->position_mm * 1e-3;
+    }
     if (!args->map) {
       if (!args->grids.empty()) throw Error("--grid", "needs --map");
       const Plant plant(scenario);

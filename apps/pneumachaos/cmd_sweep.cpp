@@ -33,7 +33,8 @@ Action add_sweep(CLI::App& app) {
       "--repeats", args->repeats,
       "runs per grid point (default: the file's [sweep] repeats, else 5 as in the paper)");
   cmd->add_option("--seed", args->seed, "seed of the run-to-run variation (default 1)");
-  cmd->add_option("--threads", args->threads, "worker threads (default: all cores)");
+  cmd->add_option("--threads", args->threads, "worker threads (default 0: all cores)")
+      ->check(CLI::Range(0, 4096));
   cmd->add_option("--out", args->out, "directory for the journal and the results")->required();
   cmd->add_flag("--resume", args->resume, "finish an interrupted sweep in --out");
   cmd->add_flag("--wolf", args->wolf, "also run Wolf's estimator on every record (slower)");

@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <system_error>
 #include <map>
 
 #include "commands.hpp"
@@ -31,10 +35,24 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version print and succeed; every other parse error is a usage error (2),
+    // not CLI11's own codes, so scripts can rely on the README's exit codes.
+    const int code = app.exit(e);
+    return code == 0 ? pneumachaos::cli::kExitOk : pneumachaos::cli::kExitBadInput;
   }
   for (auto* sub : app.get_subcommands()) return actions.at(sub)();
   return pneumachaos::cli::kExitOk;
+}
+
+// Output to a full disk or a closed descriptor must not end as success: stdout is flushed and
+// checked before the exit code is decided.
+int checked_stdout(int code) {
+  std::cout.flush();
+  const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
+  if (!failed) return code;
+  fmt::print(stderr, "pneumachaos: error: cannot write to standard output: {}\n",
+             std::strerror(errno != 0 ? errno : EIO));
+  return code == pneumachaos::cli::kExitOk ? pneumachaos::cli::kExitRunFailed : code;
 }
 
 }  // namespace
@@ -42,7 +60,14 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   // Every failure ends here with a message and an exit code, never as an uncaught exception.
   try {
-    return run(argc, argv);
+    return checked_stdout(run(argc, argv));
+  } catch (const std::system_error& e) {
+    // fmt reports a failed write to standard output this way.
+    fmt::print(stderr, "pneumachaos: error: cannot write output: {}\n", e.what());
+    return pneumachaos::cli::kExitRunFailed;
+  } catch (const pneumachaos::RunError& e) {
+    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
+    return pneumachaos::cli::kExitRunFailed;
   } catch (const pneumachaos::Error& e) {
     fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
     return pneumachaos::cli::kExitBadInput;

@@ -62,6 +62,12 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   r.mean = mean_of(x);
   r.standard_deviation = standard_deviation(x);
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  if (!std::isfinite(r.standard_deviation)) {
+    // Finite samples whose squares overflow: every index would be NaN or "constant".
+    throw Error("analyze", fmt::format("values up to {:g} are too large to analyse in double "
+                                       "precision; rescale the record (e.g. another unit)",
+                                       std::max(std::abs(*lo), std::abs(*hi))));
+  }
   RegimeEvidence& e = r.evidence;
   e.samples = x.size();
   e.mean = r.mean;

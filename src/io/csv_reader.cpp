@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
@@ -48,7 +49,9 @@ std::string unit_of(const std::string& header) {
 
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
-  std::istringstream in(text);
+  // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  std::istringstream in(text.starts_with(kBom) ? text.substr(kBom.size()) : text);
   std::string line;
   std::size_t line_no = 0;
   std::vector<std::string> header;
@@ -90,6 +93,9 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
     const auto [ptr, ec] = std::from_chars(f.data(), end, v);
     const std::string where = fmt::format("{}:{}: column {} ({})", origin, line_no, col + 1,
                                           header[static_cast<std::size_t>(col)]);
+    if (ec == std::errc::result_out_of_range && ptr == end) {
+      throw Error(where, fmt::format("{} is outside the range of a double (about 1.8e308)", f));
+    }
     if (ec != std::errc() || ptr != end || f.empty()) {
       throw Error(where, fmt::format("expected a number, got \"{}\"", f));
     }

@@ -17,8 +17,24 @@ void ModelLyapunovOptions::validate() const {
   positive(measure_s, "lyapunov.measure_s");
   positive(renormalize_s, "lyapunov.renormalize_s");
   positive(separation, "lyapunov.separation");
-  if (!(transient_s >= 0.0)) throw Error("lyapunov.transient_s", "must be >= 0");
+  if (!(std::isfinite(transient_s) && transient_s >= 0.0))
+    throw Error("lyapunov.transient_s", "must be a number >= 0");
   if (blocks < 2) throw Error("lyapunov.blocks", "must be at least 2");
+  // The uncertainty is the spread between blocks: each block needs a renormalisation.
+  if (measure_s < renormalize_s * static_cast<double>(blocks)) {
+    throw Error("lyapunov.measure_s",
+                fmt::format("{} s holds fewer than {} renormalisation intervals of {} s; the "
+                            "exponent and its uncertainty need at least that many",
+                            measure_s, blocks, renormalize_s));
+  }
+  // Every interval is a restart of two integrations and a stored running value: bound it.
+  constexpr double kMaxIntervals = 1e7;
+  if ((transient_s + measure_s) / renormalize_s > kMaxIntervals) {
+    throw Error("lyapunov.renormalize_s",
+                fmt::format("{} s over {} s is more than {:g} renormalisations; use a longer "
+                            "interval (the default 0.02 s is far shorter than the motion)",
+                            renormalize_s, transient_s + measure_s, kMaxIntervals));
+  }
 }
 
 ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector<double>& x0,
