@@ -60,14 +60,15 @@ Action add_analyze(CLI::App& app) {
     options.wolf = !args->no_wolf;
     const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
+    // The JSON and the curves appear together or not at all.
+    OutputSet outputs;
     if (!args->json.empty()) {
-      AtomicFile f(args->json);
-      f.stream() << analysis_json(r, args->file, channel.name, channel.unit) << '\n';
-      f.commit();
+      outputs.add(args->json) << analysis_json(r, args->file, channel.name, channel.unit) << '\n';
     }
     if (!args->series_out.empty()) {
-      write_analysis_series(r, channel.values, args->series_out, channel.unit);
+      write_analysis_series(r, channel.values, args->series_out, channel.unit, outputs);
     }
+    outputs.commit();
     return kExitOk;
   };
 }

@@ -123,15 +123,11 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
 }
 
 void write_analysis_series(const AnalysisResult& r, std::span<const double> x,
-                           const std::string& dir, const std::string& unit) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw Error(dir, "cannot create the directory: " + ec.message());
+                           const std::string& dir, const std::string& unit, OutputSet& out) {
   const auto write = [&](const std::string& file, const std::string& header, auto&& rows) {
-    AtomicFile f(dir + "/" + file);
-    f.stream() << header << '\n';
-    rows(f.stream());
-    f.commit();
+    std::ofstream& f = out.add((std::filesystem::path(dir) / file).string());
+    f << header << '\n';
+    rows(f);
   };
   const double dt = 1.0 / r.rate_Hz;
   write("spectrum.csv", fmt::format("f[Hz],psd[({})^2/Hz]", unit), [&](std::ostream& o) {

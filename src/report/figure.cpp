@@ -2,7 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,11 +24,34 @@ void write_text(const std::string& path, const std::string& text) {
   f.commit();
 }
 
+// Runs `gnuplot script` inside dir with its output in log, from an argument vector: no shell
+// sees the user's --out path, so quotes or spaces in it can neither break nor inject a command.
+// Returns the exit status (or -1 when gnuplot could not be started).
+int run_gnuplot(const std::string& dir, const std::string& script, const std::string& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::string program = "gnuplot", argument = script;
+  char* argv[] = {program.data(), argument.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 }  // namespace
 
 FigureFiles render_figure(const FigureSpec& spec, const std::string& relative_dir) {
   std::filesystem::create_directories(relative_dir);
-  // gnuplot runs inside the directory, so every path given to the shell must be absolute.
+  // gnuplot runs inside the directory: every path handed to it is absolute.
   const std::string dir = std::filesystem::absolute(relative_dir).string();
   FigureFiles files{spec.name,
                     spec.caption,
@@ -52,9 +80,7 @@ FigureFiles render_figure(const FigureSpec& spec, const std::string& relative_di
                          "set output\n",
                          spec.name, spec.width, spec.height));
   const std::string log = dir + "/" + spec.name + ".log";
-  const std::string command =
-      fmt::format("cd '{}' && gnuplot '{}' > '{}' 2>&1", dir, files.script, log);
-  const int status = std::system(command.c_str());
+  const int status = run_gnuplot(dir, files.script, log);
   const auto size = [&](const std::string& f) {
     std::error_code ec;
     const auto s = std::filesystem::file_size(dir + "/" + f, ec);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
 
 namespace pneumachaos {
 
@@ -20,8 +21,9 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
 
 /// Writes spectrum.csv, autocorrelation.csv, divergence.csv, wolf_running.csv,
 /// embedding.csv (3-D delay trajectory), poincare.csv and maxima_map.csv into dir (created
-/// if needed), each complete or absent.
+/// if needed) as part of `out`: they appear when `out` is committed, together with the
+/// command's other outputs.
 void write_analysis_series(const AnalysisResult& r, std::span<const double> x,
-                           const std::string& dir, const std::string& unit);
+                           const std::string& dir, const std::string& unit, OutputSet& out);
 
 }  // namespace pneumachaos

@@ -4,7 +4,9 @@
 // that looks complete.
 
 #include <fstream>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace pneumachaos {
 
@@ -18,14 +20,36 @@ class AtomicFile {
   ~AtomicFile();
 
   std::ofstream& stream() { return out_; }
-  /// Flushes, checks for write errors and renames into place; throws Error on failure.
-  void commit();
+  /// Flushes, checks for write errors and renames into place; throws RunError on failure.
+  void commit() {
+    finish();
+    publish();
+  }
+  /// The two halves of commit(), for a set of files published together: flush, check and
+  /// close the temporary; then rename it into place.
+  void finish();
+  void publish();
+  [[nodiscard]] const std::string& path() const { return path_; }
 
  private:
   std::string path_;
   std::string temp_;
   std::ofstream out_;
   bool committed_ = false;
+};
+
+/// The output files of one command, published together: nothing appears until every file
+/// has been written completely, so a failure never leaves some outputs looking complete.
+class OutputSet {
+ public:
+  /// Opens `path` for writing (creating its directory); refuses a path that is a directory.
+  std::ofstream& add(const std::string& path);
+  /// Checks every file, then moves them all into place; if a move fails, the files already
+  /// moved are removed again and RunError is thrown.
+  void commit();
+
+ private:
+  std::vector<std::unique_ptr<AtomicFile>> files_;
 };
 
 }  // namespace pneumachaos
