@@ -35,8 +35,11 @@ Action add_simulate(CLI::App& app) {
   cmd->add_option("--rate", args->rate_Hz, "output sample rate [Hz] (run.rate_Hz)");
   cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)");
   return [args]() {
-    Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
-    // The typed flags set their keys directly, so an error names the flag that was typed.
+    Scenario scenario =
+        args->scenario.file.empty() ? default_scenario() : load_scenario_file(args->scenario.file);
+    apply_overrides(scenario, args->scenario.sets);
+    // The typed flags set their keys directly, so an error names the flag that was typed; the
+    // cross-key checks run once all are applied.
     if (args->duration_s) apply_setting(scenario, "run.duration_s", *args->duration_s, "--duration");
     if (args->rate_Hz) apply_setting(scenario, "run.rate_Hz", *args->rate_Hz, "--rate");
     scenario.validate();

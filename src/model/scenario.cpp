@@ -56,8 +56,15 @@ void Scenario::validate() const {
   check_friction(friction, "friction.");
   if (load.coupling == LoadCoupling::kSpring)
     check_friction(load.guide_friction, "guide_friction.");
-  if (run.sample_rate_Hz * run.duration_s > 5e8) {
-    throw Error("run.rate_Hz", "rate x duration asks for more than 5e8 samples");
+  // The record is held in memory (a dozen channels of doubles): refuse up front what cannot
+  // fit rather than fail after allocating gigabytes.
+  constexpr double kMaxSamples = 2e7;
+  if (run.sample_rate_Hz * run.duration_s > kMaxSamples) {
+    throw Error("run.rate_Hz",
+                fmt::format("{} Hz x {} s is {:.3g} samples; at most {:g} fit in memory (about "
+                            "2 GB): lower the rate or the duration",
+                            run.sample_rate_Hz, run.duration_s,
+                            run.sample_rate_Hz * run.duration_s, kMaxSamples));
   }
 }
 

@@ -110,7 +110,11 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const I
   while (t < o.t_end_s) {
     if (s.steps_accepted + s.steps_rejected >= o.max_steps) {
       s.termination = Termination::kSolverFailure;
-      s.message = fmt::format("step limit of {} reached at t = {} s", o.max_steps, t);
+      s.message = fmt::format(
+          "step limit of {} reached at t = {} s: the model needs far smaller steps than a "
+          "pneumatic drive should (check run.max_step_ms, friction stiffness sigma0 and the "
+          "forces), or try run.stepper = \"rosenbrock4\"",
+          o.max_steps, t);
       break;
     }
     dt = std::min({dt, o.max_step_s, o.t_end_s - t});

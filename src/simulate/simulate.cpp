@@ -1,5 +1,7 @@
 #include "pneumachaos/simulate/simulate.hpp"
 
+#include <algorithm>
+
 #include <vector>
 
 namespace pneumachaos {
@@ -24,6 +26,11 @@ IntegratorOptions SimulationOptions::integrator_options() const {
   o.max_step_s = max_step_s;
   o.stepper = stepper;
   o.sample_rate_Hz = sample_rate_Hz;
+  // A budget of steps per simulated second, 10-100x what the stiffest default-rig runs need,
+  // so that an absurd step size or stiffness fails within about a second of work, not minutes.
+  constexpr double kStepsPerSimulatedSecond = 1e5;
+  o.max_steps = static_cast<std::size_t>(
+      std::clamp(kStepsPerSimulatedSecond * duration_s, 1e5, static_cast<double>(o.max_steps)));
   return o;
 }
 

@@ -1,6 +1,7 @@
 #include "distribution.hpp"
 
 #include <cstdlib>
+#include <initializer_list>
 
 #ifdef PNEUMACHAOS_HAVE_MPI
 #include <mpi.h>
