@@ -35,14 +35,21 @@ Action add_simulate(CLI::App& app) {
   cmd->add_option("--rate", args->rate_Hz, "output sample rate [Hz] (run.rate_Hz)");
   cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)");
   return [args]() {
-    Scenario scenario =
-        args->scenario.file.empty() ? default_scenario() : load_scenario_file(args->scenario.file);
-    apply_overrides(scenario, args->scenario.sets);
+    SettingOrigins origins;
+    Scenario scenario = args->scenario.file.empty()
+                            ? default_scenario()
+                            : load_scenario_file(args->scenario.file, &origins);
+    apply_overrides(scenario, args->scenario.sets, &origins);
     // The typed flags set their keys directly, so an error names the flag that was typed; the
     // cross-key checks run once all are applied.
-    if (args->duration_s) apply_setting(scenario, "run.duration_s", *args->duration_s, "--duration");
-    if (args->rate_Hz) apply_setting(scenario, "run.rate_Hz", *args->rate_Hz, "--rate");
-    scenario.validate();
+    const auto flag = [&](const char* key, std::optional<double> value, const char* name) {
+      if (!value) return;
+      apply_setting(scenario, key, *value, name);
+      origins[key] = name;
+    };
+    flag("run.duration_s", args->duration_s, "--duration");
+    flag("run.rate_Hz", args->rate_Hz, "--rate");
+    validate_scenario(scenario, origins);
     const Plant plant(scenario);
     const SimulationResult result = simulate(plant, SimulationOptions::from(scenario.run));
     fmt::print(stderr, "simulate: {}\n", describe(result.summary));

@@ -17,13 +17,14 @@ std::string location(const std::string& origin, const toml::source_region& src) 
 }
 
 void apply_table(Scenario& scenario, const toml::table& table, const std::string& prefix,
-                 const std::string& origin) {
+                 const std::string& origin, SettingOrigins* origins) {
   for (const auto& [name, node] : table) {
     const std::string key = prefix + std::string(name.str());
     const std::string where = location(origin, node.source());
     if (prefix.empty() && key == "sweep") continue;  // read by read_sweep_settings
     if (const auto* sub = node.as_table()) {
-      apply_table(scenario, *sub, key + ".", origin);
+      apply_table(scenario, *sub, key + ".", origin, origins);
+      continue;
     } else if (const auto* i = node.as_integer()) {
       apply_setting(scenario, key, static_cast<double>(i->get()), where);
     } else if (const auto* f = node.as_floating_point()) {
@@ -35,12 +36,14 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
           fmt::format("{}: {}", where, key),
           "expected a number or a word; arrays, booleans and dates are not scenario values");
     }
+    if (origins != nullptr) (*origins)[key] = where;
   }
 }
 
 }  // namespace
 
-void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin) {
+void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin,
+                SettingOrigins* origins) {
   toml::table doc;
   try {
     doc = toml::parse(toml_text, origin);
@@ -48,7 +51,7 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
     throw Error(location(origin, e.source()),
                 std::string("TOML syntax error: ") + std::string(e.description()));
   }
-  apply_table(scenario, doc, "", origin);
+  apply_table(scenario, doc, "", origin, origins);
 }
 
 SweepSettings read_sweep_settings(const std::string& path) {
@@ -95,17 +98,18 @@ SweepSettings read_sweep_settings(const std::string& path) {
   return s;
 }
 
-Scenario load_scenario_file(const std::string& path) {
+Scenario load_scenario_file(const std::string& path, SettingOrigins* origins) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the scenario file");
   std::ostringstream text;
   text << in.rdbuf();
   Scenario s = default_scenario();
-  apply_toml(s, text.str(), path);
+  apply_toml(s, text.str(), path, origins);
   return s;
 }
 
-void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments) {
+void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments,
+                     SettingOrigins* origins) {
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0) {
@@ -114,13 +118,25 @@ void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignm
     const std::string key = a.substr(0, eq);
     const std::string where = "--set";
     apply_setting(scenario, key, parse_setting_text(key, a.substr(eq + 1), where), where);
+    if (origins != nullptr) (*origins)[key] = where;
+  }
+}
+
+void validate_scenario(const Scenario& scenario, const SettingOrigins& origins) {
+  try {
+    scenario.validate();
+  } catch (const Error& e) {
+    const auto it = origins.find(e.where());
+    if (it == origins.end()) throw;
+    throw Error(it->second + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
   }
 }
 
 Scenario build_scenario(const std::string& path, const std::vector<std::string>& assignments) {
-  Scenario s = path.empty() ? default_scenario() : load_scenario_file(path);
-  apply_overrides(s, assignments);
-  s.validate();
+  SettingOrigins origins;
+  Scenario s = path.empty() ? default_scenario() : load_scenario_file(path, &origins);
+  apply_overrides(s, assignments, &origins);
+  validate_scenario(s, origins);
   return s;
 }
 

@@ -2,6 +2,7 @@
 // Reading scenarios from TOML files and applying command-line overrides.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,16 +11,26 @@
 
 namespace pneumachaos {
 
+/// Where each key was set: "file:line:column", "--set" or a flag; for the cross-key checks'
+/// errors, which run after all keys are applied.
+using SettingOrigins = std::map<std::string, std::string>;
+
 /// Applies every key of a TOML document to `scenario`. `origin` names the source in errors
 /// (a file path). Throws Error with file:line:column for syntax errors, unknown keys, wrong
-/// types and out-of-range values.
-void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin);
+/// types and out-of-range values. Records where each key was set in `origins` if given.
+void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin,
+                SettingOrigins* origins = nullptr);
 
 /// Reads a scenario file on top of the built-in defaults.
-Scenario load_scenario_file(const std::string& path);
+Scenario load_scenario_file(const std::string& path, SettingOrigins* origins = nullptr);
 
 /// Applies "key=value" overrides (from --set) in order.
-void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments);
+void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments,
+                     SettingOrigins* origins = nullptr);
+
+/// scenario.validate(), with an error about a key that was set somewhere naming that place
+/// (e.g. "rig.toml:3:1: cylinder.rod_mm: ..." or "--set: cylinder.rod_mm: ...").
+void validate_scenario(const Scenario& scenario, const SettingOrigins& origins);
 
 /// The optional [sweep] table of a scenario file: grid = ["KEY=FROM:TO:STEP", ...],
 /// repeats = N, seed = N. Other commands ignore the table.
