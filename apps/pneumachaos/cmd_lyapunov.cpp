@@ -48,7 +48,9 @@ Action add_lyapunov(CLI::App& app) {
     const FlagNames flags{{"lyapunov.measure_s", "--measure"},
                           {"lyapunov.renormalize_s", "--renormalize"},
                           {"lyapunov.transient_s", "--transient"},
-                          {"lyapunov.separation", "--separation"}};
+                          {"lyapunov.separation", "--separation"},
+                          {"relative_tolerance", "--tolerance-factor"},
+                          {"absolute_tolerance", "--tolerance-factor"}};
     const ModelLyapunovResult r =
         with_flag_names(flags, [&] { return plant_lyapunov(plant, o, args->tolerance_factor); });
     if (!r.ok) {
