@@ -32,6 +32,37 @@ TEST(CsvReader, ReadsAColumnByNameWithTimeOrRate) {
   EXPECT_EQ(r.rate_Hz(), 500.0);
 }
 
+TEST(CsvReader, ReadsBlankSeparatedColumnsWithOrWithoutAHeader) {
+  // TISEAN-style: no header, blanks and tabs, a comment line; the rate gives the time base.
+  CsvSeriesOptions o;
+  o.rate_Hz = 100.0;
+  o.column = "2";
+  const auto s = parse_csv_series("# lab export\n0.0  1.5\n0.01\t-2.5\n0.02   3e-1\n", "rec.dat", o);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s.channels().front().name, "column 2");
+  EXPECT_EQ(s.channels().front().values[1], -2.5);
+  EXPECT_EQ(s.rate_Hz(), 100.0);
+  o.column = "v";  // the default: the first column of a headerless file
+  EXPECT_EQ(parse_csv_series("4\n5\n", "rec.dat", o).channels().front().values[0], 4.0);
+  // Blank-separated with a header: the time column gives the rate.
+  const auto h = parse_csv_series("t[s] v[m/s]\n0 1\n0.5 2\n1.0 3\n", "rec.dat", {});
+  EXPECT_NEAR(h.rate_Hz(), 2.0, 1e-12);
+  EXPECT_EQ(h.channels().front().unit, "m/s");
+}
+
+TEST(CsvReader, AHeaderlessFileNeedsARateAndANumberedColumn) {
+  EXPECT_EQ(error_of("1 2\n3 4\n"),
+            "rec.csv:1: the file has no header and so no time column: give the sample rate "
+            "(--rate)");
+  CsvSeriesOptions o;
+  o.rate_Hz = 10.0;
+  o.column = "3";
+  EXPECT_EQ(error_of("1 2\n3 4\n", o),
+            "rec.csv:1: the file has no header: give --column as a number from 1 to 2, got \"3\"");
+  o.column = "2";
+  EXPECT_EQ(error_of("1 2\n3 x\n", o), "rec.csv:2: column 2 (column 2): expected a number, got \"x\"");
+}
+
 TEST(CsvReader, BadInputNamesTheLineAndColumn) {
   EXPECT_EQ(error_of("t,v\n0,1\n0.001,abc\n"),
             "rec.csv:3: column 2 (v): expected a number, got \"abc\"");

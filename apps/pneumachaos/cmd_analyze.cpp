@@ -40,10 +40,14 @@ Action add_analyze(CLI::App& app) {
       "Chaos indices of a uniformly sampled record (measured or simulated): spectrum, "
       "autocorrelation, embedding, Lyapunov exponents (divergence curve and Wolf 1985), "
       "Poincare section, regime verdict");
-  cmd->add_option("file", args->file, "CSV file with a header")
+  cmd->add_option("file", args->file,
+                  "record: CSV with a header, or blank-separated columns with or without one; "
+                  "- reads standard input")
       ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--column", args->column, "column to analyse, by header name (default v)");
+      ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
+  cmd->add_option("--column", args->column,
+                  "column to analyse: header name (default v), or its number in a file "
+                  "without a header (default 1)");
   cmd->add_option("--rate", args->rate_Hz, "sample rate [Hz] when the file has no time column");
   cmd->add_option("--json", args->json, "write every number with its unit as JSON to this file");
   cmd->add_option("--series-out", args->series_out,

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -24,10 +25,16 @@ std::string trim(std::string s) {
   return s;
 }
 
-std::vector<std::string> split(const std::string& line) {
+// Fields of one line: comma-separated (our own CSV, spreadsheets) or, in a file without
+// commas, separated by runs of blanks (TISEAN and most lab exports).
+std::vector<std::string> split(const std::string& line, bool commas) {
   std::vector<std::string> fields;
   std::string field;
   std::istringstream in(line);
+  if (!commas) {
+    while (in >> field) fields.push_back(trim(field));
+    return fields;
+  }
   while (std::getline(in, field, ',')) fields.push_back(trim(field));
   if (!line.empty() && line.back() == ',') fields.emplace_back();
   return fields;
@@ -45,120 +52,198 @@ std::string unit_of(const std::string& header) {
   return header.substr(open + 1, close - open - 1);
 }
 
+bool is_number(const std::string& f) {
+  double v = 0.0;
+  const char* end = f.data() + f.size();
+  const auto [ptr, ec] = std::from_chars(f.data(), end, v);
+  return !f.empty() && ptr == end && (ec == std::errc() || ec == std::errc::result_out_of_range);
+}
+
+// The lines of a record, numbered as in the file; blank lines and '#' comments are skipped.
+class LineSource {
+ public:
+  explicit LineSource(const std::string& text) : in_(text) {}
+  bool next(std::string& line) {
+    while (std::getline(in_, line)) {
+      ++number_;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      const std::string t = trim(line);
+      if (!t.empty() && t.front() != '#') return true;
+    }
+    return false;
+  }
+  [[nodiscard]] std::size_t number() const { return number_; }
+
+ private:
+  std::istringstream in_;
+  std::size_t number_ = 0;
+};
+
+// The column layout, from the first line: a header of names, or (all fields numbers) none,
+// in which case columns are numbered from 1 and the first line is already data.
+struct Layout {
+  bool commas = true;
+  bool has_header = true;
+  std::vector<std::string> names;
+  std::size_t header_line = 0;
+  int value = -1, time = -1;
+};
+
+int find_column(const std::vector<std::string>& names, const std::vector<std::string>& wanted) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    for (const auto& n : wanted) {
+      if (names[i] == n || base_name(names[i]) == n) return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+// Without a header the column is given by its number (1 = first); "v", the default, means
+// the first column, as in TISEAN.
+int numbered_column(const std::string& column, std::size_t count, const std::string& where) {
+  if (column == "v") return 0;
+  int n = 0;
+  const auto [ptr, ec] = std::from_chars(column.data(), column.data() + column.size(), n);
+  if (ec != std::errc() || ptr != column.data() + column.size() || n < 1 ||
+      static_cast<std::size_t>(n) > count) {
+    throw Error(where, fmt::format("the file has no header: give --column as a number from 1 to "
+                                   "{}, got \"{}\"",
+                                   count, column));
+  }
+  return n - 1;
+}
+
+Layout read_layout(LineSource& lines, std::string& first, const std::string& origin,
+                   const CsvSeriesOptions& options) {
+  if (!lines.next(first)) throw Error(origin, "the file is empty: expected a header line");
+  Layout l;
+  l.commas = first.find(',') != std::string::npos;
+  l.names = split(first, l.commas);
+  l.header_line = lines.number();
+  l.has_header = !std::all_of(l.names.begin(), l.names.end(), is_number);
+  const std::string where = fmt::format("{}:{}", origin, l.header_line);
+  if (!l.has_header) {
+    for (std::size_t i = 0; i < l.names.size(); ++i) l.names[i] = fmt::format("column {}", i + 1);
+    l.value = numbered_column(options.column, l.names.size(), where);
+  } else {
+    l.value = find_column(l.names, {options.column});
+    l.time = find_column(l.names, {"t", "time", "time_s", "t_s"});
+  }
+  if (l.value < 0) {
+    std::string known;
+    for (const auto& h : l.names) known += (known.empty() ? "" : ", ") + h;
+    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}", options.column,
+                                   known));
+  }
+  if (!options.rate_Hz && l.time < 0) {
+    throw Error(where, l.has_header ? "no time column (t, time, t[s]) in the header: give the "
+                                      "sample rate (--rate)"
+                                    : "the file has no header and so no time column: give the "
+                                      "sample rate (--rate)");
+  }
+  return l;
+}
+
+double parse_cell(const std::string& f, const std::string& where) {
+  double v = 0.0;
+  const char* end = f.data() + f.size();
+  const auto [ptr, ec] = std::from_chars(f.data(), end, v);
+  if (ec == std::errc::result_out_of_range && ptr == end) {
+    throw Error(where, fmt::format("{} is outside the range of a double (about 1.8e308)", f));
+  }
+  if (ec != std::errc() || ptr != end || f.empty()) {
+    throw Error(where, fmt::format("expected a number, got \"{}\"", f));
+  }
+  if (!std::isfinite(v)) throw Error(where, fmt::format("expected a finite number, got {}", f));
+  return v;
+}
+
+struct Columns {
+  std::vector<double> values, times;
+};
+
+// One data line into the columns; time must increase.
+void read_row(const std::string& line, std::size_t line_no, const Layout& l,
+              const std::string& origin, Columns& c) {
+  const auto fields = split(line, l.commas);
+  if (fields.size() != l.names.size()) {
+    throw Error(fmt::format("{}:{}", origin, line_no),
+                fmt::format("expected {} fields as in {}, got {}", l.names.size(),
+                            l.has_header ? "the header" : "the first line", fields.size()));
+  }
+  const auto cell = [&](int col) {
+    const auto i = static_cast<std::size_t>(col);
+    return parse_cell(fields[i], fmt::format("{}:{}: column {} ({})", origin, line_no, col + 1,
+                                             l.names[i]));
+  };
+  c.values.push_back(cell(l.value));
+  if (l.time < 0) return;
+  c.times.push_back(cell(l.time));
+  const std::size_t n = c.times.size();
+  if (n >= 2 && !(c.times[n - 1] > c.times[n - 2])) {
+    throw Error(fmt::format("{}:{}: column {} ({})", origin, line_no, l.time + 1,
+                            l.names[static_cast<std::size_t>(l.time)]),
+                fmt::format("time must increase: {} follows {}", c.times[n - 1], c.times[n - 2]));
+  }
+}
+
+// The sample rate from the time column: every step within the jitter of the median step,
+// and the mean step over the record as the estimate of the sampling period.
+double rate_from_times(const std::vector<double>& times, const std::string& origin,
+                       double jitter) {
+  std::vector<double> steps(times.size() - 1);
+  for (std::size_t i = 1; i < times.size(); ++i) steps[i - 1] = times[i] - times[i - 1];
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (std::abs(steps[i] - median) > jitter * median) {
+      // Data line of sample i+1: count from the first data line, blank lines aside.
+      throw Error(fmt::format("{}: sample {} (t = {})", origin, i + 2, times[i + 1]),
+                  fmt::format("non-uniform sampling: step {} s differs from the median step "
+                              "{} s by more than {} %",
+                              steps[i], median, jitter * 100.0));
+    }
+  }
+  return static_cast<double>(times.size() - 1) / (times.back() - times.front());
+}
+
 }  // namespace
 
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
-  // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  std::istringstream in(text.starts_with(kBom) ? text.substr(kBom.size()) : text);
-  std::string line;
-  std::size_t line_no = 0;
-  std::vector<std::string> header;
-  while (header.empty() && std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!trim(line).empty()) header = split(line);
-  }
-  if (header.empty()) throw Error(origin, "the file is empty: expected a header line");
-  const auto find_column = [&](const std::vector<std::string>& names) -> int {
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      for (const auto& n : names) {
-        if (header[i] == n || base_name(header[i]) == n) return static_cast<int>(i);
-      }
-    }
-    return -1;
-  };
-  const int value_col = find_column({options.column});
-  if (value_col < 0) {
-    std::string known;
-    for (const auto& h : header) known += (known.empty() ? "" : ", ") + h;
-    throw Error(fmt::format("{}:{}", origin, line_no),
-                fmt::format("no column \"{}\" in the header; it has: {}", options.column, known));
-  }
-  const int time_col = find_column({"t", "time", "time_s", "t_s"});
-  if (!options.rate_Hz && time_col < 0) {
-    throw Error(fmt::format("{}:{}", origin, line_no),
-                "no time column (t, time, t[s]) in the header: give the sample rate (--rate)");
-  }
   if (options.rate_Hz && !(std::isfinite(*options.rate_Hz) && *options.rate_Hz > 0.0)) {
     throw Error("--rate", fmt::format("must be a positive number of Hz, got {}", *options.rate_Hz));
   }
-
-  std::vector<double> values, times;
-  const auto cell = [&](const std::vector<std::string>& fields, int col) {
-    const std::string& f = fields[static_cast<std::size_t>(col)];
-    double v = 0.0;
-    const char* end = f.data() + f.size();
-    const auto [ptr, ec] = std::from_chars(f.data(), end, v);
-    const std::string where = fmt::format("{}:{}: column {} ({})", origin, line_no, col + 1,
-                                          header[static_cast<std::size_t>(col)]);
-    if (ec == std::errc::result_out_of_range && ptr == end) {
-      throw Error(where, fmt::format("{} is outside the range of a double (about 1.8e308)", f));
-    }
-    if (ec != std::errc() || ptr != end || f.empty()) {
-      throw Error(where, fmt::format("expected a number, got \"{}\"", f));
-    }
-    if (!std::isfinite(v)) throw Error(where, fmt::format("expected a finite number, got {}", f));
-    return v;
-  };
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trim(line).empty()) continue;
-    const auto fields = split(line);
-    if (fields.size() != header.size()) {
-      throw Error(
-          fmt::format("{}:{}", origin, line_no),
-          fmt::format("expected {} fields as in the header, got {}", header.size(), fields.size()));
-    }
-    values.push_back(cell(fields, value_col));
-    if (time_col >= 0) {
-      times.push_back(cell(fields, time_col));
-      if (times.size() >= 2 && !(times.back() > times[times.size() - 2])) {
-        throw Error(fmt::format("{}:{}: column {} ({})", origin, line_no, time_col + 1,
-                                header[static_cast<std::size_t>(time_col)]),
-                    fmt::format("time must increase: {} follows {}", times.back(),
-                                times[times.size() - 2]));
-      }
-    }
+  // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  LineSource lines(text.starts_with(kBom) ? text.substr(kBom.size()) : text);
+  std::string line;
+  const Layout layout = read_layout(lines, line, origin, options);
+  Columns c;
+  if (!layout.has_header) read_row(line, layout.header_line, layout, origin, c);
+  while (lines.next(line)) read_row(line, lines.number(), layout, origin, c);
+  if (c.values.size() < 2) {
+    throw Error(origin, fmt::format("{} sample(s): at least 2 are needed", c.values.size()));
   }
-  if (values.size() < 2) {
-    throw Error(origin, fmt::format("{} sample(s): at least 2 are needed", values.size()));
-  }
-
-  double rate = options.rate_Hz.value_or(0.0);
-  double start = 0.0;
-  if (!options.rate_Hz) {
-    std::vector<double> steps(times.size() - 1);
-    for (std::size_t i = 1; i < times.size(); ++i) steps[i - 1] = times[i] - times[i - 1];
-    std::vector<double> sorted = steps;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double median = sorted[sorted.size() / 2];
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      if (std::abs(steps[i] - median) > options.time_jitter * median) {
-        // Data line of sample i+1: count from the first data line, blank lines aside.
-        throw Error(fmt::format("{}: sample {} (t = {})", origin, i + 2, times[i + 1]),
-                    fmt::format("non-uniform sampling: step {} s differs from the median step "
-                                "{} s by more than {} %",
-                                steps[i], median, options.time_jitter * 100.0));
-      }
-    }
-    // The mean step over the record is the best estimate of the sampling period.
-    rate = static_cast<double>(times.size() - 1) / (times.back() - times.front());
-    start = times.front();
-  }
-  TimeSeries series(rate, start);
-  series.add_channel(base_name(header[static_cast<std::size_t>(value_col)]),
-                     unit_of(header[static_cast<std::size_t>(value_col)]));
-  for (double v : values) series.append(std::span<const double>(&v, 1));
+  const bool timed = !options.rate_Hz;
+  TimeSeries series(timed ? rate_from_times(c.times, origin, options.time_jitter) : *options.rate_Hz,
+                    timed ? c.times.front() : 0.0);
+  const std::string& header = layout.names[static_cast<std::size_t>(layout.value)];
+  series.add_channel(layout.has_header ? base_name(header) : header,
+                     layout.has_header ? unit_of(header) : "");
+  for (double v : c.values) series.append(std::span<const double>(&v, 1));
   return series;
 }
 
 TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options) {
+  std::ostringstream text;
+  if (path == "-") {
+    text << std::cin.rdbuf();
+    return parse_csv_series(text.str(), "<stdin>", options);
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the file");
-  std::ostringstream text;
   text << in.rdbuf();
   return parse_csv_series(text.str(), path, options);
 }

@@ -1,5 +1,7 @@
 #pragma once
-// Reading one uniformly sampled channel from a CSV file with a header (measured or simulated).
+// Reading one uniformly sampled channel from a record (measured or simulated): comma-separated
+// with a header naming the columns (as `simulate` writes), or blank-separated columns with or
+// without a header (TISEAN and lab exports); '#' lines are comments.
 
 #include <optional>
 #include <string>
@@ -9,7 +11,9 @@
 namespace pneumachaos {
 
 struct CsvSeriesOptions {
-  std::string column = "v";  ///< header name, matched exactly or before a "[unit]" suffix
+  /// Header name, matched exactly or before a "[unit]" suffix; in a file without a header the
+  /// column's number (1 = first; the default "v" then means the first column).
+  std::string column = "v";
   /// Sample rate [Hz]; when unset the file needs a time column (t, time, t[s], time_s).
   std::optional<double> rate_Hz;
   /// Largest allowed deviation of a time step from the median step, relative to it; A/D
@@ -17,9 +21,11 @@ struct CsvSeriesOptions {
   double time_jitter = 0.01;
 };
 
-/// Reads the column as a one-channel TimeSeries named after it. Throws Error naming the
-/// file, line and column for a missing column, a non-numeric or non-finite cell, a row with
-/// the wrong number of fields, non-increasing or non-uniform time, or fewer than 2 samples.
+/// Reads the column as a one-channel TimeSeries named after it; path "-" reads standard
+/// input. A first line whose fields are all numbers is data (no header). Throws Error naming
+/// the file, line and column for a missing column, a non-numeric or non-finite cell, a row
+/// with the wrong number of fields, non-increasing or non-uniform time, or fewer than 2
+/// samples.
 TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options);
 
 /// The same from text already in memory; `origin` names it in errors.
