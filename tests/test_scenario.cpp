@@ -92,5 +92,16 @@ TEST(Scenario, CrossKeyChecksNameTheKey) {
             std::string::npos);
 }
 
+TEST(Scenario, DefaultsPrintAsWrittenWithoutConversionNoise) {
+  // Stored in SI, shown in the key's unit: 20 cm^3 must not print as 20.000000000000004.
+  const Scenario d = default_scenario();
+  for (const auto& k : scenario_key_infos()) {
+    const std::string text = setting_text(d, k.key);
+    EXPECT_EQ(text.find("0000000"), std::string::npos) << k.key << " = " << text;
+    EXPECT_EQ(text.find("9999999"), std::string::npos) << k.key << " = " << text;
+  }
+  EXPECT_EQ(setting_text(d, "cylinder.dead_volume_head_cm3"), "20");
+}
+
 }  // namespace
 }  // namespace pneumachaos

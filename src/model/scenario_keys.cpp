@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -278,7 +279,12 @@ const KeySpec& find(const std::string& key, const std::string& where) {
                                              : "; keys of that section are: " + hint));
 }
 
-std::string format_number(double v) { return fmt::format("{}", v); }
+// Values are stored in SI and shown in the key's unit: the division leaves conversion noise
+// in the last bits (20 cm^3 shows as 20.000000000000004). Fifteen significant digits, the
+// most a double always carries, remove it; the shortest form of that is printed.
+std::string format_number(double v) {
+  return fmt::format("{}", std::strtod(fmt::format("{:.15g}", v).c_str(), nullptr));
+}
 
 }  // namespace
 
