@@ -17,4 +17,13 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 mpirun --allow-run-as-root --oversubscribe -np 2 "$cli" "${args[@]}" --out "$work/mpi" >/dev/null
 ls "$work/mpi"/journal.rank1.csv >/dev/null  # both ranks took part
 for f in runs.csv points.csv summary.json; do cmp "$work/local/$f" "$work/mpi/$f"; done
-echo "mpirun -np 2 and the local run wrote identical files"
+# One rank cannot open its journal (a directory stands in its place): every rank must stop
+# with a message, none may wait forever for the failed one.
+mkdir -p "$work/broken/journal.rank1.csv"
+if timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$cli" "${args[@]}" \
+    --out "$work/broken" --resume >"$work/broken.log" 2>&1; then
+  echo "a rank that cannot write its journal was not reported"; exit 1
+fi
+grep -q "a directory stands where the journal must be written" "$work/broken.log" || { cat "$work/broken.log"; exit 1; }
+grep -q "another MPI rank failed" "$work/broken.log" || { cat "$work/broken.log"; exit 1; }
+echo "mpirun -np 2 and the local run wrote identical files; a failed rank stops all"

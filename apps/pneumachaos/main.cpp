@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <system_error>
 #include <map>
@@ -61,6 +62,9 @@ int main(int argc, char** argv) {
   // Every failure ends here with a message and an exit code, never as an uncaught exception.
   try {
     return checked_stdout(run(argc, argv));
+  } catch (const std::filesystem::filesystem_error& e) {
+    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
+    return pneumachaos::cli::kExitRunFailed;
   } catch (const std::system_error& e) {
     // fmt reports a failed write to standard output this way.
     fmt::print(stderr, "pneumachaos: error: cannot write output: {}\n", e.what());

@@ -37,6 +37,8 @@ void check_header(const std::string& line, const std::string& path,
 // The text up to the last complete line; `cut` truncates a torn tail in the file too (only
 // for the own file: another rank may be writing its tail right now).
 std::string complete_lines(const std::string& path, bool cut) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return "";  // open() names the obstacle
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot read the journal");
   std::stringstream text;
@@ -105,7 +107,7 @@ std::vector<RunRecord> Journal::read_all(const std::string& dir, const std::stri
 
 Journal::Journal(const std::string& dir, const std::string& own_name,
                  const std::string& fingerprint, bool resume)
-    : path_((std::filesystem::path(dir) / own_name).string()) {
+    : path_((std::filesystem::path(dir) / own_name).string()), fingerprint_(fingerprint) {
   const auto files = journal_files(dir);
   if (!files.empty() && !resume) {
     throw Error(dir,
@@ -116,10 +118,18 @@ Journal::Journal(const std::string& dir, const std::string& own_name,
   // Compared by name: "DIR/" and "DIR" must find the same own journal, so its torn tail is cut.
   for (const auto& f : files) reader.read(f, std::filesystem::path(f).filename() == own_name);
   existing_ = std::move(reader).records();
-  const bool fresh = !std::filesystem::exists(path_) || std::filesystem::file_size(path_) == 0;
+}
+
+void Journal::open() {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec)) {
+    throw RunError(path_, "a directory stands where the journal must be written");
+  }
+  const auto size = std::filesystem::file_size(path_, ec);
+  const bool fresh = ec || size == 0;
   file_ = std::fopen(path_.c_str(), "ab");
-  if (file_ == nullptr) throw Error(path_, "cannot open the journal for writing");
-  if (fresh) write_line(header_of(fingerprint) + "\n");
+  if (file_ == nullptr) throw RunError(path_, "cannot open the journal for writing");
+  if (fresh) write_line(header_of(fingerprint_) + "\n");
 }
 
 Journal::~Journal() {

@@ -28,10 +28,10 @@ class JournalReader {
 
 class Journal {
  public:
-  /// Opens (creating if needed) this process's journal `own_name` in dir for appending, after
-  /// reading every journal*.csv there (other ranks' too). Each must carry the same
-  /// fingerprint; a torn last line (a process killed mid-write) is ignored, and cut off in
-  /// the own journal.
+  /// Reads every journal*.csv in dir (other ranks' too) for this process's journal
+  /// `own_name`. Each must carry the same fingerprint; a torn last line (a process killed
+  /// mid-write) is ignored, and cut off in the own journal. Nothing is created until open():
+  /// under MPI every rank must have read the directory before any rank creates its file.
   Journal(const std::string& dir, const std::string& own_name, const std::string& fingerprint,
           bool resume);
 
@@ -43,12 +43,15 @@ class Journal {
 
   /// Records found when the journal was opened.
   [[nodiscard]] const std::vector<RunRecord>& existing() const { return existing_; }
+  /// Opens (creating if needed) the own journal for appending.
+  void open();
   /// Appends one record and forces it to disk before returning.
   void append(const RunRecord& record);
 
  private:
   void write_line(const std::string& line);
   std::string path_;
+  std::string fingerprint_;
   std::FILE* file_ = nullptr;
   std::vector<RunRecord> existing_;
 };

@@ -175,8 +175,6 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   detail::Distribution& dist = detail::Distribution::instance();
   const std::string own =
       dist.size() == 1 ? "journal.csv" : fmt::format("journal.rank{}.csv", dist.rank());
-  // Every rank reads the journals before any rank appends to them.
-  dist.barrier();
   RankFailure failure;
   std::unique_ptr<detail::Journal> journal;
   std::vector<RunRecord> records;
@@ -185,6 +183,9 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
                                                 options.resume);
     records = journal->existing();
   });
+  // Every rank has read the directory before any rank creates its own journal in it.
+  failure.agree(dist, options.out_dir);
+  failure.attempt([&] { journal->open(); });
   failure.agree(dist, options.out_dir);
   failure.attempt([&] {
     const auto pending = pending_runs(finished_runs(spec, records, options.out_dir), dist);
