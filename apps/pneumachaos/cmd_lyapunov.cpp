@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "flag_names.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/lyapunov_output.hpp"
 #include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
@@ -21,6 +22,7 @@ Action add_lyapunov(CLI::App& app) {
     ModelLyapunovOptions o;
     double tolerance_factor = 1.0;
     std::string running_out;
+    bool json = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -38,6 +40,7 @@ Action add_lyapunov(CLI::App& app) {
       "--tolerance-factor", args->tolerance_factor,
       "multiply the integration tolerances (rtol 1e-9, atol 1e-12; e.g. 0.5 to confirm)");
   cmd->add_option("--running-out", args->running_out, "CSV file for the running estimate");
+  cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     const Plant plant(scenario);
@@ -57,23 +60,11 @@ Action add_lyapunov(CLI::App& app) {
       fmt::print(stderr, "lyapunov: {}\n", r.message);
       return kExitRunFailed;
     }
-    fmt::print("largest Lyapunov exponent of the model: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s)\n",
-               r.lambda_per_s, r.uncertainty_per_s, r.lambda_per_s / std::numbers::ln2);
-    fmt::print(
-        "{} renormalisations every {} s over {} s after {} s of transient ({} postponed "
-        "while the two trajectories were in different stick/slip modes)\n",
-        r.renormalizations, o.renormalize_s, o.measure_s, o.transient_s, r.postponed);
-    fmt::print("convergence (running estimate, 1/s):");
-    const std::size_t n = r.running_per_s.size();
-    for (std::size_t k = 1; k <= 8; ++k) {
-      const std::size_t i = std::min(n - 1, k * n / 8 - 1);
-      fmt::print(" t={:.3g}s:{:.4g}", r.running_time_s[i], r.running_per_s[i]);
-    }
-    fmt::print("\n");
+    fmt::print("{}", args->json ? lyapunov_json(r, o) + "\n" : lyapunov_summary(r, o));
     if (!args->running_out.empty()) {
       AtomicFile f(args->running_out);
       f.stream() << "t[s],lambda[1/s]\n";
-      for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t i = 0; i < r.running_per_s.size(); ++i)
         f.stream() << fmt::format("{},{}\n", r.running_time_s[i], r.running_per_s[i]);
       f.commit();
     }

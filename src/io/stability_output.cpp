@@ -4,13 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_quantity.hpp"
+
 namespace pneumachaos {
 namespace {
 
-nlohmann::json quantity(double value, const char* unit) {
-  return {{"value", std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr)},
-          {"unit", unit}};
-}
+nlohmann::json quantity(double value, const char* unit) { return json_quantity(value, unit); }
 
 const char* circuit_name(const Scenario& s) {
   return s.circuit.kind == CircuitKind::kMeterOut ? "meter-out" : "meter-in";
