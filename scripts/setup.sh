@@ -12,6 +12,7 @@ packages=(
   gnuplot-nox
   libopenmpi-dev openmpi-bin
   clang libclang-rt-14-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 )
 
 missing=()

@@ -1,0 +1,230 @@
+// The compiled half of the Python package: thin wrappers over the library, returning the
+// same JSON the command line prints (one source for field names and units) and numpy arrays
+// for the long series. python/pneumachaos/__init__.py builds the user-facing API on top.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/analysis_output.hpp"
+#include "pneumachaos/io/lyapunov_output.hpp"
+#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/io/stability_output.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/stability_map.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
+
+namespace py = pybind11;
+using namespace pneumachaos;
+
+namespace {
+
+// A vector handed to numpy without a copy: the array owns it through a capsule.
+py::array_t<double> to_numpy(std::vector<double>&& v) {
+  auto* owned = new std::vector<double>(std::move(v));
+  py::capsule free_when_done(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>(static_cast<py::ssize_t>(owned->size()), owned->data(),
+                             free_when_done);
+}
+
+py::array_t<double> copy_to_numpy(const std::vector<double>& v) {
+  return to_numpy(std::vector<double>(v));
+}
+
+// A 1-D float array from Python, checked as the CLI checks a record.
+std::vector<double> series_from(const py::array& in) {
+  if (in.ndim() != 1) {
+    throw Error("x", "expected a 1-D array of samples, got " + std::to_string(in.ndim()) +
+                         " dimensions");
+  }
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(in);
+  if (!a) throw Error("x", "expected an array of numbers");
+  std::vector<double> x(a.data(), a.data() + a.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) {
+      throw Error("x", "sample " + std::to_string(i) + " is not a finite number");
+    }
+  }
+  return x;
+}
+
+void check_rate(double rate_Hz) {
+  if (!(std::isfinite(rate_Hz) && rate_Hz > 0.0)) throw Error("rate_Hz", "must be a positive number");
+}
+
+py::dict simulate_py(const Scenario& scenario) {
+  SimulationResult r;
+  {
+    py::gil_scoped_release release;
+    r = simulate(Plant(scenario), SimulationOptions::from(scenario.run));
+  }
+  py::dict out;
+  out["ok"] = r.summary.ok();
+  out["summary"] = describe(r.summary);
+  out["termination"] = std::string(termination_name(r.summary.termination));
+  if (!r.summary.ok()) return out;
+  std::vector<double> t(r.series.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = r.series.time_s(k);
+  py::dict channels, units;
+  channels["t"] = to_numpy(std::move(t));
+  units["t"] = "s";
+  for (auto& c : r.series.channels()) {
+    units[py::str(c.name)] = c.unit;
+    channels[py::str(c.name)] = copy_to_numpy(c.values);
+  }
+  out["channels"] = channels;
+  out["units"] = units;
+  out["rate_Hz"] = r.series.rate_Hz();
+  return out;
+}
+
+py::tuple analyze_py(const py::array& x_in, double rate_Hz, const AnalysisOptions& options) {
+  std::vector<double> x = series_from(x_in);
+  check_rate(rate_Hz);
+  AnalysisResult r;
+  {
+    py::gil_scoped_release release;
+    r = analyze_series(x, rate_Hz, options);
+  }
+  py::dict curves;
+  curves["frequency_Hz"] = copy_to_numpy(r.spectrum.frequency_Hz);
+  curves["psd"] = copy_to_numpy(r.spectrum.psd);
+  curves["acf"] = copy_to_numpy(r.acf.r);
+  curves["divergence"] = copy_to_numpy(r.divergence.curve);
+  curves["wolf_time_s"] = copy_to_numpy(r.wolf.running_time_s);
+  curves["wolf_per_s"] = copy_to_numpy(r.wolf.running_per_s);
+  return py::make_tuple(analysis_json(r, "<array>", "x", ""), curves);
+}
+
+std::string stability_map_csv(const Scenario& scenario, const std::vector<std::string>& grid) {
+  std::vector<GridAxis> axes;
+  for (const auto& g : grid) axes.push_back(parse_grid_axis(g));
+  if (axes.empty()) axes = paper_valve_grid();
+  std::ostringstream csv;
+  {
+    py::gil_scoped_release release;
+    const StabilityMap map = stability_map(scenario, axes, {});
+    write_stability_map_csv(csv, map, scenario.ambient_pressure_Pa);
+  }
+  return csv.str();
+}
+
+py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid,
+                  std::size_t repeats, std::uint64_t seed, const std::string& out,
+                  std::size_t threads, bool resume) {
+  SweepSpec spec;
+  spec.base = scenario;
+  for (const auto& g : grid) spec.axes.push_back(parse_grid_axis(g));
+  if (spec.axes.empty()) spec.axes = paper_valve_grid();
+  spec.repeats = repeats;
+  spec.seed = seed;
+  SweepOptions o;
+  o.out_dir = out;
+  o.threads = threads;
+  o.resume = resume;
+  o.progress = false;
+  SweepSummary s;
+  {
+    py::gil_scoped_release release;
+    s = run_sweep(spec, o);
+  }
+  py::dict d;
+  d["runs"] = s.runs;
+  d["failed"] = s.failed;
+  d["points"] = s.points;
+  d["stick_slip_points"] = s.stick_slip_points;
+  d["chaos_full_points"] = s.chaos_full_points;
+  d["chaos_any_points"] = s.chaos_any_points;
+  return d;
+}
+
+void bind_scenario(py::module_& m) {
+  py::class_<Scenario>(m, "Scenario")
+      .def_static("default", &default_scenario)
+      .def_static("from_toml", [](const std::string& path) { return build_scenario(path, {}); })
+      .def("set_number",
+           [](Scenario& s, const std::string& key, double v) {
+             Scenario next = s;
+             apply_setting(next, key, v, "Scenario.set");
+             next.validate();
+             s = next;
+           })
+      .def("set_word",
+           [](Scenario& s, const std::string& key, const std::string& v) {
+             Scenario next = s;
+             apply_setting(next, key, v, "Scenario.set");
+             next.validate();
+             s = next;
+           })
+      .def("get", [](const Scenario& s, const std::string& key) { return setting_text(s, key); })
+      .def("to_toml", [](const Scenario& s) { return scenario_to_toml(s); })
+      .def("copy", [](const Scenario& s) { return s; });
+  m.def("key_infos", [] {
+    py::list out;
+    const Scenario d = default_scenario();
+    for (const auto& k : scenario_key_infos()) {
+      py::dict e;
+      e["key"] = k.key;
+      e["unit"] = k.unit;
+      e["default"] = setting_text(d, k.key);
+      e["description"] = k.description;
+      e["allowed"] = k.choices.empty() ? k.range : k.choices;
+      out.append(e);
+    }
+    return out;
+  });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "pneumachaos compiled core (use the pneumachaos package)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const RunError& e) {
+      PyErr_SetString(PyExc_RuntimeError, e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  bind_scenario(m);
+  py::class_<AnalysisOptions>(m, "AnalysisOptions")
+      .def(py::init<>())
+      .def_readwrite("wolf", &AnalysisOptions::wolf)
+      .def_readwrite("dimension", &AnalysisOptions::dimension)
+      .def_readwrite("delay", &AnalysisOptions::delay)
+      .def_readwrite("theiler", &AnalysisOptions::theiler);
+  m.def("simulate", &simulate_py);
+  m.def("analyze", &analyze_py);
+  m.def("stability_json", [](const Scenario& s) {
+    py::gil_scoped_release release;
+    const Plant plant(s);
+    return stability_json(plant, analyze_stability(plant, {}));
+  });
+  m.def("stability_map_csv", &stability_map_csv);
+  m.def("model_lyapunov_json", [](const Scenario& s, double transient_s, double measure_s,
+                                  double renormalize_s) {
+    ModelLyapunovOptions o;
+    o.transient_s = transient_s;
+    o.measure_s = measure_s;
+    o.renormalize_s = renormalize_s;
+    ModelLyapunovResult r;
+    {
+      py::gil_scoped_release release;
+      r = plant_lyapunov(Plant(s), o);
+    }
+    if (!r.ok) throw RunError("model_lyapunov", r.message);
+    return lyapunov_json(r, o);
+  });
+  m.def("sweep", &sweep_py);
+}

@@ -1,0 +1,168 @@
+"""pneumachaos for notebooks: simulate a pneumatic cylinder, analyse any record for chaos.
+
+Bad input raises ValueError with the same message as the command line; a run that fails
+(solver, step budget, a file that cannot be written) raises RuntimeError. Long calls release
+the GIL, so threads of a notebook keep running.
+"""
+
+import io
+import json
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["Scenario", "SimulationResult", "AnalysisResult", "simulate", "analyze",
+           "stability", "stability_map", "model_lyapunov", "sweep"]
+
+
+class Scenario:
+    """Every parameter of a run. Keys and units as in `pneumachaos scenario --keys`."""
+
+    def __init__(self, core=None):
+        self._core = core if core is not None else _core.Scenario.default()
+
+    @classmethod
+    def default(cls):
+        """The built-in default scenario (the virtual rig)."""
+        return cls(_core.Scenario.default())
+
+    @classmethod
+    def from_toml(cls, path):
+        """A scenario file on top of the defaults, validated."""
+        return cls(_core.Scenario.from_toml(str(path)))
+
+    def set(self, key, value):
+        """Sets one key in its unit (e.g. set("circuit.S2_mm2", 0.05)); returns self."""
+        if isinstance(value, str):
+            self._core.set_word(key, value)
+        elif isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+            raise ValueError(f"Scenario.set: {key}: expected a number or a word, got {value!r}")
+        else:
+            self._core.set_number(key, float(value))
+        return self
+
+    def get(self, key):
+        """The key's value as text in its unit."""
+        return self._core.get(key)
+
+    @staticmethod
+    def keys():
+        """Every key with its unit, default, description and allowed values (list of dicts)."""
+        return _core.key_infos()
+
+    def to_toml(self):
+        return self._core.to_toml()
+
+    def copy(self):
+        return Scenario(self._core.copy())
+
+
+class SimulationResult:
+    """A time response: t, x, v, P1, P2, ... as numpy arrays (SI units, see .units)."""
+
+    def __init__(self, raw):
+        self.ok = raw["ok"]
+        self.summary = raw["summary"]
+        self.termination = raw["termination"]
+        self.rate_Hz = raw.get("rate_Hz")
+        self.units = dict(raw.get("units", {}))
+        self._channels = dict(raw.get("channels", {}))
+
+    def __getattr__(self, name):
+        channels = self.__dict__.get("_channels", {})
+        if name in channels:
+            return channels[name]
+        raise AttributeError(f"no channel {name!r}; the record has {sorted(channels)}")
+
+    @property
+    def channels(self):
+        return list(self._channels)
+
+    def to_dict(self):
+        return {"summary": self.summary, "termination": self.termination,
+                "rate_Hz": self.rate_Hz, "units": self.units, **self._channels}
+
+
+class AnalysisResult:
+    """Every index of `pneumachaos analyze` (as in its --json output, in .json) and the
+    curves as numpy arrays (.curves: frequency_Hz, psd, acf, divergence, wolf_*)."""
+
+    def __init__(self, text, curves):
+        self.json = json.loads(text)
+        self.curves = dict(curves)
+
+    @property
+    def verdict(self):
+        return self.json["verdict"]
+
+    def __getitem__(self, key):
+        return self.json[key]
+
+
+def _scenario(scenario):
+    if scenario is None:
+        return Scenario.default()
+    if not isinstance(scenario, Scenario):
+        raise ValueError(f"expected a pneumachaos.Scenario, got {type(scenario).__name__}")
+    return scenario
+
+
+def simulate(scenario=None, duration_s=None, rate_Hz=None):
+    """Simulates the scenario; duration_s and rate_Hz override run.duration_s / run.rate_Hz.
+    Raises RuntimeError when the run fails (the summary says why)."""
+    s = _scenario(scenario).copy()
+    if duration_s is not None:
+        s.set("run.duration_s", duration_s)
+    if rate_Hz is not None:
+        s.set("run.rate_Hz", rate_Hz)
+    result = SimulationResult(_core.simulate(s._core))
+    if not result.ok:
+        raise RuntimeError(f"simulate: {result.summary}")
+    return result
+
+
+def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0):
+    """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
+    rate_Hz. dimension, delay (samples), theiler (samples): 0 = automatic."""
+    options = _core.AnalysisOptions()
+    options.wolf = bool(wolf)
+    for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+            raise ValueError(f"{name}: expected a whole number >= 0, got {value!r}")
+        setattr(options, name, int(value))
+    return AnalysisResult(*_core.analyze(np.asarray(x), float(rate_Hz), options))
+
+
+def stability(scenario=None):
+    """Equilibrium, the paper's a1/b1 and damping coefficient, the full model's eigenvalues
+    and both verdicts, as `pneumachaos stability --json` gives them."""
+    return json.loads(_core.stability_json(_scenario(scenario)._core))
+
+
+def stability_map(scenario=None, grid=()):
+    """The stability verdict over a grid ("KEY=FROM:TO:STEP" strings; default: the paper's
+    S1 x S2 grid) as a dict of numpy arrays, one per column of `stability --map`."""
+    text = _core.stability_map_csv(_scenario(scenario)._core, list(grid))
+    table = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, dtype=None,
+                          encoding="utf-8", deletechars="", autostrip=True)
+    return {name: np.atleast_1d(table[name]) for name in table.dtype.names}
+
+
+def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s=0.02):
+    """The model's own largest Lyapunov exponent (two trajectories, renormalised), as
+    `pneumachaos lyapunov --json` gives it."""
+    return json.loads(_core.model_lyapunov_json(_scenario(scenario)._core, float(transient_s),
+                                                float(measure_s), float(renormalize_s)))
+
+
+def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False):
+    """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
+    summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv."""
+    if not out:
+        raise ValueError("sweep: out: a directory for the results is required")
+    for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+            raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
+    return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
+                       int(threads), bool(resume))
