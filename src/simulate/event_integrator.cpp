@@ -26,6 +26,9 @@ struct ModeRhs {
     dxdt.resize(x.size());
     system->derivative(*mode, x, dxdt, t);
   }
+  bool jacobian(const State& x, double t, State& dfdx, State& dfdt) const {
+    return system->jacobian(*mode, x, t, dfdx, dfdt);
+  }
 };
 
 bool all_finite(std::span<const double> x) {

@@ -48,6 +48,10 @@ class Plant final : public HybridSystem {
   EventOutcome apply_event(std::size_t which, Mode& mode, std::span<double> x,
                            double t) const override;
   [[nodiscard]] Mode initial_mode(std::span<const double> x, double t) const override;
+  /// The exact Jacobian of derivative() in `mode`, by automatic differentiation of the same
+  /// templated equations (Eigen's AutoDiff); the plant is autonomous, so dfdt = 0.
+  bool jacobian(const Mode& mode, std::span<const double> x, double t, std::span<double> dfdx,
+                std::span<double> dfdt) const override;
 
   /// MODEL.md start of a run: chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
   [[nodiscard]] std::vector<double> initial_state() const;
@@ -92,11 +96,21 @@ class Plant final : public HybridSystem {
   };
 
   [[nodiscard]] EventList active_events(const Mode& mode) const;
-  [[nodiscard]] double drive_force(std::size_t contact, std::span<const double> x) const;
-  [[nodiscard]] FrictionInput friction_input(std::size_t contact, std::span<const double> x) const;
+
+  // The model's equations, written once on a scalar type T (double, or an automatic-
+  // differentiation scalar for the Jacobian); defined in src/model/plant_equations.hpp.
+  template <typename T>
+  void evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const;
+  template <typename T>
+  [[nodiscard]] T drive_force(std::size_t contact, std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] BasicFrictionInput<T> friction_input(std::size_t contact,
+                                                     std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T friction_force(std::size_t contact, ContactMode m, std::span<const T> x,
+                                 std::span<T> dz) const;
+
   [[nodiscard]] double holding_force(std::size_t contact, std::span<const double> x) const;
-  [[nodiscard]] double friction_force(std::size_t contact, ContactMode m, std::span<const double> x,
-                                      std::span<double> dz) const;
   /// The mode of a contact at rest (v = 0) consistent with its forces.
   [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
                                       bool at_stop) const;
