@@ -63,6 +63,31 @@ TEST(Equilibrium, NoSteadyMotionIsAResultWithAReason) {
   EXPECT_FALSE(s.reason.empty());
 }
 
+// Issue 16 finding 2: an exhaust far wider than the supply (or a supply all but shut) made
+// the chamber-1 balance unbracketable and ended in an internal error (exit 70).
+TEST(Equilibrium, ExhaustTooWideForTheSupplyIsAResultNamingBothKeys) {
+  for (const char* set : {"circuit.S2_mm2=1e10", "circuit.S1_mm2=1e-12"}) {
+    const Plant plant(scenario({set}));
+    EquilibriumResult r;
+    ASSERT_NO_THROW(r = find_equilibria(plant)) << set;
+    EXPECT_FALSE(r.exists()) << set;
+    EXPECT_NE(r.reason.find("circuit.S1_mm2"), std::string::npos) << r.reason;
+    EXPECT_NE(r.reason.find("circuit.S2_mm2"), std::string::npos) << r.reason;
+  }
+}
+
+TEST(StabilityMap, MarksAPointWithoutSteadyMotionAndGoesOn) {
+  const std::vector<GridAxis> axes{{"circuit.S2_mm2", {0.35, 0.5, 1e10}}};
+  StabilityMap map;
+  ASSERT_NO_THROW(map = stability_map(scenario({}), axes));
+  ASSERT_EQ(map.points.size(), 3u);
+  EXPECT_TRUE(map.points[0].result.has_equilibrium());
+  EXPECT_TRUE(map.points[1].result.has_equilibrium());
+  EXPECT_FALSE(map.points[2].result.has_equilibrium());
+  EXPECT_FALSE(map.points[2].result.reason.empty());
+  EXPECT_EQ(map.with_equilibrium, 2u);
+}
+
 class JacobianTest : public ::testing::TestWithParam<std::vector<std::string>> {};
 
 TEST_P(JacobianTest, AnalyticMatchesFiniteDifferences) {

@@ -1,5 +1,8 @@
 #include "pneumachaos/stability/stability_map.hpp"
 
+#include <exception>
+#include <string>
+
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -21,6 +24,10 @@ StabilityMap stability_map(const Scenario& base, const std::vector<GridAxis>& ax
       point.result = analyze_stability(plant, options);
     } catch (const Error& e) {
       point.error = e.what();
+    } catch (const std::exception& e) {
+      // A numerical breakdown at one point (Boost.Math, Eigen) marks that point; the map
+      // goes on (issue 16: one bad point used to abort the whole map).
+      point.error = std::string("numerical failure: ") + e.what();
     }
     if (point.result.has_equilibrium()) {
       ++map.with_equilibrium;

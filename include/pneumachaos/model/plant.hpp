@@ -63,6 +63,10 @@ class Plant final : public HybridSystem {
 
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
   [[nodiscard]] const Scenario& scenario() const { return scenario_; }
+  [[nodiscard]] double ambient_pressure_Pa() const { return scenario_.ambient_pressure_Pa; }
+  [[nodiscard]] double supply_pressure_Pa() const { return scenario_.supply_pressure_Pa(); }
+  [[nodiscard]] const CylinderGeometry& geometry() const { return scenario_.cylinder; }
+  [[nodiscard]] const LoadParams& load() const { return scenario_.load; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
   /// The load guide's friction model; nullptr for rigid coupling.
   [[nodiscard]] const FrictionModel* guide_friction() const { return guide_.get(); }
