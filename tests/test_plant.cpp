@@ -33,7 +33,7 @@ class ClosedChamberTest : public ::testing::TestWithParam<double> {};
 TEST_P(ClosedChamberTest, KeepsPVkConstant) {
   const double k = GetParam();
   const Plant plant(frictionless_closed(k));
-  const auto& geo = plant.scenario().cylinder;
+  const auto& geo = plant.geometry();
   std::vector<double> x0 = plant.initial_state();
   x0[plant.layout().x] = 0.2;
   x0[plant.layout().P1] = 3.0e5;
@@ -62,8 +62,8 @@ INSTANTIATE_TEST_SUITE_P(AdiabaticAndIsothermal, ClosedChamberTest, ::testing::V
 TEST(Plant, AdiabaticGasSpringConservesEnergy) {
   // E = m v^2/2 + (P1 V1 + P2 V2)/(k-1) + Pa (A1 - A2) x is a first integral when both valves
   // are shut and friction is zero (work of the gas on the piston against the atmosphere).
-  const Plant plant(frictionless_closed(1.4));
-  const auto& s = plant.scenario();
+  const Scenario s = frictionless_closed(1.4);
+  const Plant plant(s);
   std::vector<double> x0 = plant.initial_state();
   x0[plant.layout().x] = 0.2;
   x0[plant.layout().P1] = 3.0e5;

@@ -28,8 +28,8 @@ const std::vector<std::string> kWideStribeck{"friction.vs_mm_per_s=40",
                                              "friction.stribeck_exponent=1"};
 
 TEST(Equilibrium, ChokedMeterOutSpeedAndForceBalance) {
-  const Plant plant(scenario({"friction.model=classic"}));
-  const auto& s = plant.scenario();
+  const Scenario s = scenario({"friction.model=classic"});
+  const Plant plant(s);
   const EquilibriumResult eqs = find_equilibria(plant);
   ASSERT_EQ(eqs.equilibria.size(), 1u);
   const Equilibrium& e = eqs.primary();
@@ -147,12 +147,12 @@ TEST(Stability, NegativeStribeckSlopeIsSelfExcitedByBothAnalyses) {
 }
 
 TEST(Stability, MeterInUsesB1) {
-  const Plant plant(scenario({"circuit.kind=meter-in", "friction.model=classic"}));
-  const StabilityResult r = analyze_stability(plant);
+  const Scenario s = scenario({"circuit.kind=meter-in", "friction.model=classic"});
+  const Plant plant(s);
+  const StabilityResult r = analyze_stability(plant, {.circuit = CircuitKind::kMeterIn});
   ASSERT_TRUE(r.has_equilibrium());
   EXPECT_GT(r.paper.b1, 0.0);
   // b m equals k m R T Cd1 Ps / (V10 P10) when the supply is choked (eq. 11 from eq. 10).
-  const auto& s = plant.scenario();
   const double m = s.load.mass_kg;
   EXPECT_NEAR(r.paper.b1 - s.friction.viscous_Ns_per_m, r.paper.b * m, 1e-6 * r.paper.b * m);
   EXPECT_EQ(r.verdict_full, StabilityVerdict::kDamped);

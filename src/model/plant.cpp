@@ -20,24 +20,30 @@ void set_mode(Mode& m, std::size_t contact, ContactMode c) {
 
 }  // namespace
 
-Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
-  scenario_.validate();
-  A1_ = scenario_.cylinder.area_head_m2();
-  A2_ = scenario_.cylinder.area_rod_m2();
+Plant::Plant(const Scenario& scenario)
+    : geometry_(scenario.cylinder),
+      load_(scenario.load),
+      ambient_Pa_(scenario.ambient_pressure_Pa),
+      supply_Pa_(scenario.supply_pressure_Pa()),
+      polytropic_exponent_(scenario.polytropic_exponent),
+      RT_(scenario.gas.R_J_per_kgK * scenario.temperature_K) {
+  scenario.validate();
+  A1_ = geometry_.area_head_m2();
+  A2_ = geometry_.area_rod_m2();
   // Chamber and supply air share one temperature (no energy equation), so each valve's
   // upstream temperature is the same in either flow direction.
-  valve1_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S1(), scenario_.temperature_K);
-  valve2_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S2(), scenario_.temperature_K);
-  seal_ = make_friction_model(scenario_.friction);
+  valve1_.emplace(scenario.valve, scenario.gas, scenario.circuit.S1(), scenario.temperature_K);
+  valve2_.emplace(scenario.valve, scenario.gas, scenario.circuit.S2(), scenario.temperature_K);
+  seal_ = make_friction_model(scenario.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
     layout_.seal_z = layout_.append("z", "m", layout_.seal_z_count);
   }
-  const bool spring = scenario_.load.coupling == LoadCoupling::kSpring;
-  piston_mass_ = spring ? scenario_.load.piston_mass_kg : scenario_.load.mass_kg;
+  const bool spring = load_.coupling == LoadCoupling::kSpring;
+  piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
   if (spring) {
     contacts_ = 2;
-    guide_ = make_friction_model(scenario_.load.guide_friction);
+    guide_ = make_friction_model(load_.guide_friction);
     layout_.load_x = layout_.append("x_load", "m");
     layout_.load_v = layout_.append("v_load", "m/s");
     if (guide_->state_count() > 0) {
@@ -49,14 +55,14 @@ Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
 
 std::vector<double> Plant::initial_state() const {
   std::vector<double> x(layout_.size, 0.0);
-  x[layout_.P1] = scenario_.ambient_pressure_Pa;
-  x[layout_.P2] = scenario_.supply_pressure_Pa();
+  x[layout_.P1] = ambient_Pa_;
+  x[layout_.P2] = supply_Pa_;
   return x;
 }
 
 std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
-  return {valve1_->mass_flow(scenario_.supply_pressure_Pa(), P1_Pa),
-          valve2_->mass_flow(P2_Pa, scenario_.ambient_pressure_Pa)};
+  return {valve1_->mass_flow(supply_Pa_, P1_Pa),
+          valve2_->mass_flow(P2_Pa, ambient_Pa_)};
 }
 
 double Plant::holding_force(std::size_t contact, std::span<const double> x) const {
@@ -86,7 +92,7 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
       if (m != ContactMode::kSlidePos) add(EventType::kStopHit, c);
-      if (!scenario_.cylinder.volumes_frozen()) add(EventType::kStrokeEnd, c);
+      if (!geometry_.volumes_frozen()) add(EventType::kStrokeEnd, c);
     }
   }
   return list;
@@ -115,7 +121,7 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
         g[i] = x[L.x];
         break;
       case EventType::kStrokeEnd:
-        g[i] = scenario_.cylinder.stroke_m - x[L.x];
+        g[i] = geometry_.stroke_m - x[L.x];
         break;
     }
   }
@@ -166,7 +172,7 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       out.kind = EventKind::kStopHit;
       break;
     case EventType::kStrokeEnd:
-      x[ix] = scenario_.cylinder.stroke_m;
+      x[ix] = geometry_.stroke_m;
       out.kind = EventKind::kTerminal;
       out.terminate = true;
       out.message = "end of stroke reached";

@@ -28,24 +28,24 @@ inline int direction_of(ContactMode m) {
 
 template <typename T>
 T Plant::drive_force(std::size_t contact, std::span<const T> x) const {
-  const double Pa = scenario_.ambient_pressure_Pa;
+  const double Pa = ambient_Pa_;
   const auto& L = layout_;
   T coupling(0.0);
   if (contacts_ == 2) {
-    coupling = scenario_.load.coupling_stiffness_N_per_m * (x[L.x] - x[L.load_x]) +
-               scenario_.load.coupling_damping_Ns_per_m * (x[L.v] - x[L.load_v]);
+    coupling = load_.coupling_stiffness_N_per_m * (x[L.x] - x[L.load_x]) +
+               load_.coupling_damping_Ns_per_m * (x[L.v] - x[L.load_v]);
   }
-  if (contact == plant_detail::kGuide) return coupling - scenario_.load.external_force_N;
+  if (contact == plant_detail::kGuide) return coupling - load_.external_force_N;
   const T pneumatic = A1_ * (x[L.P1] - Pa) - A2_ * (x[L.P2] - Pa);
   if (contacts_ == 2) return pneumatic - coupling;
-  return pneumatic - scenario_.load.external_force_N;
+  return pneumatic - load_.external_force_N;
 }
 
 template <typename T>
 BasicFrictionInput<T> Plant::friction_input(std::size_t contact, std::span<const T> x) const {
   const auto& L = layout_;
   if (contact == plant_detail::kGuide) return {x[L.load_v], T(0.0), x[L.load_x]};
-  return {x[L.v], x[L.P1] + x[L.P2] - 2.0 * scenario_.ambient_pressure_Pa, x[L.x]};
+  return {x[L.v], x[L.P1] + x[L.P2] - 2.0 * ambient_Pa_, x[L.x]};
 }
 
 template <typename T>
@@ -69,15 +69,15 @@ template <typename T>
 void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const {
   using namespace plant_detail;
   const auto& L = layout_;
-  const double k = scenario_.polytropic_exponent;
-  const double RT = scenario_.gas.R_J_per_kgK * scenario_.temperature_K;
+  const double k = polytropic_exponent_;
+  const double RT = RT_;
   const T& vp = x[L.v];
   const T& P1 = x[L.P1];
   const T& P2 = x[L.P2];
-  const T V1 = scenario_.cylinder.volume_head_m3(x[L.x]);
-  const T V2 = scenario_.cylinder.volume_rod_m3(x[L.x]);
-  const T W1 = valve1_->mass_flow(T(scenario_.supply_pressure_Pa()), P1);
-  const T W2 = valve2_->mass_flow(P2, T(scenario_.ambient_pressure_Pa));
+  const T V1 = geometry_.volume_head_m3(x[L.x]);
+  const T V2 = geometry_.volume_rod_m3(x[L.x]);
+  const T W1 = valve1_->mass_flow(T(supply_Pa_), P1);
+  const T W2 = valve2_->mass_flow(P2, T(ambient_Pa_));
   dxdt[L.P1] = k * RT / V1 * W1 - k * P1 * A1_ / V1 * vp;   // eq. (2)
   dxdt[L.P2] = -k * RT / V2 * W2 + k * P2 * A2_ / V2 * vp;  // eq. (3)
 
@@ -97,7 +97,7 @@ void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) 
   };
   body(kSeal, L.x, L.v, L.seal_z, L.seal_z_count, piston_mass_);
   if (contacts_ == 2) {
-    body(kGuide, L.load_x, L.load_v, L.guide_z, L.guide_z_count, scenario_.load.mass_kg);
+    body(kGuide, L.load_x, L.load_v, L.guide_z, L.guide_z_count, load_.mass_kg);
   }
 }
 

@@ -136,14 +136,14 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
   return r;
 }
 
-ModelLyapunovResult plant_lyapunov(const Plant& plant, ModelLyapunovOptions o,
-                                   double tolerance_factor) {
+ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run,
+                                   ModelLyapunovOptions o, double tolerance_factor) {
   o.scales = plant.state_scales();
   o.perturbed_state = plant.layout().P1;
   o.relative_tolerance = 1e-9 * tolerance_factor;
   o.absolute_tolerance = 1e-12 * tolerance_factor;
-  o.max_step_s = plant.scenario().run.max_step_s;
-  o.stepper = plant.scenario().run.stepper;
+  o.max_step_s = run.max_step_s;
+  o.stepper = run.stepper;
   return model_lyapunov(plant, plant.initial_state(), o);
 }
 

@@ -61,12 +61,16 @@ class Plant final : public HybridSystem {
   /// for norms that weigh positions, speeds and pressures alike (model Lyapunov exponent).
   [[nodiscard]] std::vector<double> state_scales() const;
 
+  // What the plant integrates, and nothing else of the Scenario it was built from (the run's
+  // settings, the circuit's name and the variation stay with the caller).
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
-  [[nodiscard]] const Scenario& scenario() const { return scenario_; }
-  [[nodiscard]] double ambient_pressure_Pa() const { return scenario_.ambient_pressure_Pa; }
-  [[nodiscard]] double supply_pressure_Pa() const { return scenario_.supply_pressure_Pa(); }
-  [[nodiscard]] const CylinderGeometry& geometry() const { return scenario_.cylinder; }
-  [[nodiscard]] const LoadParams& load() const { return scenario_.load; }
+  [[nodiscard]] double ambient_pressure_Pa() const { return ambient_Pa_; }
+  [[nodiscard]] double supply_pressure_Pa() const { return supply_Pa_; }  ///< absolute
+  [[nodiscard]] double polytropic_exponent() const { return polytropic_exponent_; }
+  /// R T of the air [J/kg]: chambers and supply share one temperature (no energy equation).
+  [[nodiscard]] double RT_J_per_kg() const { return RT_; }
+  [[nodiscard]] const CylinderGeometry& geometry() const { return geometry_; }
+  [[nodiscard]] const LoadParams& load() const { return load_; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
   /// The load guide's friction model; nullptr for rigid coupling.
   [[nodiscard]] const FrictionModel* guide_friction() const { return guide_.get(); }
@@ -119,7 +123,12 @@ class Plant final : public HybridSystem {
   [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
                                       bool at_stop) const;
 
-  Scenario scenario_;
+  CylinderGeometry geometry_;
+  LoadParams load_;
+  double ambient_Pa_ = 0.0;
+  double supply_Pa_ = 0.0;
+  double polytropic_exponent_ = 0.0;
+  double RT_ = 0.0;
   StateLayout layout_;
   std::unique_ptr<FrictionModel> seal_;
   std::unique_ptr<FrictionModel> guide_;
