@@ -74,6 +74,11 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
+double Plant::head_pressure_rate(std::span<const double> x) const {
+  return head_chamber_rate(x);
+}
+double Plant::rod_pressure_rate(std::span<const double> x) const { return rod_chamber_rate(x); }
+
 void Plant::derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
                        double /*t*/) const {
   evaluate(mode, x, dxdt);

@@ -66,20 +66,29 @@ T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x
 }
 
 template <typename T>
+T Plant::head_chamber_rate(std::span<const T> x) const {
+  const auto& L = layout_;
+  const double k = polytropic_exponent_;
+  const T V1 = geometry_.volume_head_m3(x[L.x]);
+  const T W1 = valve1_->mass_flow(T(supply_Pa_), x[L.P1]);
+  return k * RT_ / V1 * W1 - k * x[L.P1] * A1_ / V1 * x[L.v];  // eq. (2)
+}
+
+template <typename T>
+T Plant::rod_chamber_rate(std::span<const T> x) const {
+  const auto& L = layout_;
+  const double k = polytropic_exponent_;
+  const T V2 = geometry_.volume_rod_m3(x[L.x]);
+  const T W2 = valve2_->mass_flow(x[L.P2], T(ambient_Pa_));
+  return -k * RT_ / V2 * W2 + k * x[L.P2] * A2_ / V2 * x[L.v];  // eq. (3)
+}
+
+template <typename T>
 void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const {
   using namespace plant_detail;
   const auto& L = layout_;
-  const double k = polytropic_exponent_;
-  const double RT = RT_;
-  const T& vp = x[L.v];
-  const T& P1 = x[L.P1];
-  const T& P2 = x[L.P2];
-  const T V1 = geometry_.volume_head_m3(x[L.x]);
-  const T V2 = geometry_.volume_rod_m3(x[L.x]);
-  const T W1 = valve1_->mass_flow(T(supply_Pa_), P1);
-  const T W2 = valve2_->mass_flow(P2, T(ambient_Pa_));
-  dxdt[L.P1] = k * RT / V1 * W1 - k * P1 * A1_ / V1 * vp;   // eq. (2)
-  dxdt[L.P2] = -k * RT / V2 * W2 + k * P2 * A2_ / V2 * vp;  // eq. (3)
+  dxdt[L.P1] = head_chamber_rate(x);
+  dxdt[L.P2] = rod_chamber_rate(x);
 
   const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
                         std::size_t nz, double mass) {

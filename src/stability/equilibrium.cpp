@@ -56,19 +56,21 @@ class SteadyMotion {
   // Speed at which chamber 2's outflow through S2 balances its shrinking volume, eq. (3) = 0.
   // Eq. (3) is affine in v, so two evaluations give the root exactly.
   double exhaust_speed(double P2) {
-    place(0.0, plant_.supply_pressure_Pa(), P2);
-    const double at_rest = rate(L_.P2);
-    place(1.0, plant_.supply_pressure_Pa(), P2);
-    return at_rest / (at_rest - rate(L_.P2));
+    state_[L_.P2] = P2;
+    state_[L_.v] = 0.0;
+    const double at_rest = plant_.rod_pressure_rate(state_);
+    state_[L_.v] = 1.0;
+    return at_rest / (at_rest - plant_.rod_pressure_rate(state_));
   }
 
   // Chamber 1's pressure at which the supply through S1 fills the growing volume, eq. (2) = 0.
   // The inflow is positive down to vacuum (S1 > 0), so (0, Ps] always brackets the root
   // unless the supply keeps chamber 1 at Ps.
-  double chamber1_pressure(double v, double P2) {
+  double chamber1_pressure(double v) {
+    state_[L_.v] = v;
     const auto balance = [&](double P1) {
-      place(v, P1, P2);
-      return rate(L_.P1);
+      state_[L_.P1] = P1;
+      return plant_.head_pressure_rate(state_);
     };
     const double Ps = plant_.supply_pressure_Pa();
     return balance(Ps) >= 0.0 ? Ps : root(balance, 0.0, Ps);
@@ -77,7 +79,7 @@ class SteadyMotion {
   // Places the steady motion with rod-side pressure P2 (the search's parameter).
   void place_at(double P2) {
     const double v = exhaust_speed(P2);
-    const double P1 = chamber1_pressure(v, P2);
+    const double P1 = chamber1_pressure(v);
     place(v, P1, P2);
     if (L_.has_load_body()) settle_load();
   }

@@ -83,6 +83,11 @@ class Plant final : public HybridSystem {
   /// Mass whose motion carries the seal friction: total mass (rigid) or piston + rod (spring).
   [[nodiscard]] double piston_mass_kg() const { return piston_mass_; }
 
+  /// dP1/dt (eq. 2) and dP2/dt (eq. 3) alone: the parts of derivative() that no mode changes,
+  /// for balances that need only one chamber.
+  [[nodiscard]] double head_pressure_rate(std::span<const double> x) const;
+  [[nodiscard]] double rod_pressure_rate(std::span<const double> x) const;
+
   /// Mass flows W1 (into chamber 1) and W2 (out of chamber 2) at these pressures.
   [[nodiscard]] std::array<double, 2> mass_flows(double P1_Pa, double P2_Pa) const;
 
@@ -109,6 +114,10 @@ class Plant final : public HybridSystem {
   // differentiation scalar for the Jacobian); defined in src/model/plant_equations.hpp.
   template <typename T>
   void evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const;
+  template <typename T>
+  [[nodiscard]] T head_chamber_rate(std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T rod_chamber_rate(std::span<const T> x) const;
   template <typename T>
   [[nodiscard]] T drive_force(std::size_t contact, std::span<const T> x) const;
   template <typename T>
