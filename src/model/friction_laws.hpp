@@ -18,7 +18,8 @@ template <typename T>
 T texture_factor(const FrictionParams& p, const T& position_m) {
   using std::sin;
   T f(1.0);
-  for (const TextureMode& m : p.texture) f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);
+  for (const TextureMode& m : p.texture)
+    f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);
   return f;
 }
 
@@ -32,8 +33,7 @@ T coulomb_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
 /// Fs, likewise.
 template <typename T>
 T static_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
-  return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) *
-         texture_factor(p, in.position_m);
+  return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(p, in.position_m);
 }
 
 /// exp(-(|speed|/vs)^delta), the Stribeck drop's weight.
@@ -74,7 +74,8 @@ T stiction_sliding_N(const FrictionParams& p, const BasicFrictionInput<T>& in, i
   const double d = direction;
   T speed = d * in.v_m_per_s;
   if (speed < 0.0) speed = T(0.0);
-  const T level = p.kind == FrictionKind::kClassic ? coulomb_N(p, in) : stribeck_level_N(p, in, speed);
+  const T level =
+      p.kind == FrictionKind::kClassic ? coulomb_N(p, in) : stribeck_level_N(p, in, speed);
   return d * (level + p.viscous_Ns_per_m * speed);
 }
 

@@ -61,8 +61,7 @@ std::vector<double> Plant::initial_state() const {
 }
 
 std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
-  return {valve1_->mass_flow(supply_Pa_, P1_Pa),
-          valve2_->mass_flow(P2_Pa, ambient_Pa_)};
+  return {valve1_->mass_flow(supply_Pa_, P1_Pa), valve2_->mass_flow(P2_Pa, ambient_Pa_)};
 }
 
 double Plant::holding_force(std::size_t contact, std::span<const double> x) const {
@@ -74,9 +73,7 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
-double Plant::head_pressure_rate(std::span<const double> x) const {
-  return head_chamber_rate(x);
-}
+double Plant::head_pressure_rate(std::span<const double> x) const { return head_chamber_rate(x); }
 double Plant::rod_pressure_rate(std::span<const double> x) const { return rod_chamber_rate(x); }
 
 void Plant::derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
@@ -162,7 +159,8 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       break;
     }
     case EventType::kBreakaway:
-      set_mode(mode, c, drive_force<double>(c, x) > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg);
+      set_mode(mode, c,
+               drive_force<double>(c, x) > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg);
       out.kind = EventKind::kSlip;
       break;
     case EventType::kStopRelease:

@@ -1,13 +1,12 @@
 // The Plant's Jacobian by forward-mode automatic differentiation (Eigen's AutoDiff module) of
 // the same templated equations derivative() runs, so no derivative is written by hand.
 #include <Eigen/Core>
-#include <unsupported/Eigen/AutoDiff>
-
 #include <algorithm>
 #include <array>
+#include <unsupported/Eigen/AutoDiff>
 
-#include "pneumachaos/core/error.hpp"
 #include "plant_equations.hpp"
+#include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -108,9 +108,9 @@ class TwoTrajectories {
       return true;
     }
     r.ok = false;
-    r.message = fmt::format("a trajectory ended at t = {:.4g} s before the measurement did: {}",
-                            next,
-                            a.termination != Termination::kDurationReached ? a.message : b.message);
+    r.message =
+        fmt::format("a trajectory ended at t = {:.4g} s before the measurement did: {}", next,
+                    a.termination != Termination::kDurationReached ? a.message : b.message);
     return false;
   }
 
@@ -200,8 +200,8 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
   return r;
 }
 
-ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run,
-                                   ModelLyapunovOptions o, double tolerance_factor) {
+ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, ModelLyapunovOptions o,
+                                   double tolerance_factor) {
   o.scales = plant.state_scales();
   o.perturbed_state = plant.layout().P1;
   o.relative_tolerance = 1e-9 * tolerance_factor;

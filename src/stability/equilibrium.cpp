@@ -151,9 +151,9 @@ double checked_position(const Plant& plant, const EquilibriumOptions& options) {
 std::vector<double> scanned_overpressures(const Plant& plant, int n) {
   const double Pa = plant.ambient_pressure_Pa();
   const double Ps = plant.supply_pressure_Pa();
-  const double dP_max = 1.01 * (plant.A1() * (Ps - Pa) + std::max(0.0, -plant.load().external_force_N)) /
-                            plant.A2() +
-                        1.0;
+  const double dP_max =
+      1.01 * (plant.A1() * (Ps - Pa) + std::max(0.0, -plant.load().external_force_N)) / plant.A2() +
+      1.0;
   const double lo = 1e-7 * dP_max;
   std::vector<double> dP(static_cast<std::size_t>(n) + 1);
   for (std::size_t i = 0; i < dP.size(); ++i) {
@@ -165,7 +165,7 @@ std::vector<double> scanned_overpressures(const Plant& plant, int n) {
 Equilibrium equilibrium_at(const Plant& plant, SteadyMotion& motion, double P2) {
   motion.place_at(P2);
   const SteadyFriction fr = steady_friction(plant, motion.v(), motion.P1(), motion.P2());
-  return {motion.v(),  motion.P1(),       motion.P2(),   motion.position_m(),
+  return {motion.v(), motion.P1(),       motion.P2(),   motion.position_m(),
           fr.force_N, fr.slope_Ns_per_m, motion.state()};
 }
 

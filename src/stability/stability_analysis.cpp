@@ -26,7 +26,8 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq,
   const double k = plant.polytropic_exponent();
   const double RT = plant.RT_J_per_kg();
   const LoadParams& load = plant.load();
-  const double m = load.mass_kg + (load.coupling == LoadCoupling::kSpring ? load.piston_mass_kg : 0.0);
+  const double m =
+      load.mass_kg + (load.coupling == LoadCoupling::kSpring ? load.piston_mass_kg : 0.0);
   const double V10 = plant.geometry().volume_head_m3(eq.position_m);
   const double V20 = plant.geometry().volume_rod_m3(eq.position_m);
   const double B = eq.slope_Ns_per_m;
