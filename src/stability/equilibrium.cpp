@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
-#include <limits>
+#include <string>
+#include <vector>
 
 #include "pneumachaos/core/error.hpp"
 
