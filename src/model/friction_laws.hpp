@@ -13,7 +13,7 @@
 
 namespace pneumachaos::friction_law {
 
-/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (MODEL.md item 5).
+/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/architecture.md).
 template <typename T>
 T texture_factor(const FrictionParams& p, const T& position_m) {
   using std::sin;
@@ -23,7 +23,7 @@ T texture_factor(const FrictionParams& p, const T& position_m) {
   return f;
 }
 
-/// Fc with its pressure dependence and texture (MODEL.md items 4 and 5).
+/// Fc with its pressure dependence and texture (docs/architecture.md).
 template <typename T>
 T coulomb_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
   return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *
