@@ -33,7 +33,7 @@ class ClosedChamberTest : public ::testing::TestWithParam<double> {};
 TEST_P(ClosedChamberTest, KeepsPVkConstant) {
   const double k = GetParam();
   const Plant plant(frictionless_closed(k));
-  const auto& geo = plant.scenario().cylinder;
+  const auto& geo = plant.geometry();
   std::vector<double> x0 = plant.initial_state();
   x0[plant.layout().x] = 0.2;
   x0[plant.layout().P1] = 3.0e5;
@@ -62,8 +62,8 @@ INSTANTIATE_TEST_SUITE_P(AdiabaticAndIsothermal, ClosedChamberTest, ::testing::V
 TEST(Plant, AdiabaticGasSpringConservesEnergy) {
   // E = m v^2/2 + (P1 V1 + P2 V2)/(k-1) + Pa (A1 - A2) x is a first integral when both valves
   // are shut and friction is zero (work of the gas on the piston against the atmosphere).
-  const Plant plant(frictionless_closed(1.4));
-  const auto& s = plant.scenario();
+  const Scenario s = frictionless_closed(1.4);
+  const Plant plant(s);
   std::vector<double> x0 = plant.initial_state();
   x0[plant.layout().x] = 0.2;
   x0[plant.layout().P1] = 3.0e5;
@@ -194,6 +194,70 @@ TEST(Plant, StiffSpringCouplingMovesLikeOneRigidMass) {
                             s.gas.R_J_per_kgK * s.temperature_K / plant.A2();
   EXPECT_NEAR(r.series.channel("v_load").values.back() / v_expected, 1.0, 1e-4);
   EXPECT_NEAR(r.series.channel("v").values.back() / v_expected, 1.0, 1e-4);
+}
+
+// The full-state Jacobian the stiff stepper uses, against central differences of the
+// plant's own derivative, in a sliding mode and, for true stiction, the stuck mode (whose
+// x and v rows must be exactly zero: v held at 0, x frozen).
+void expect_jacobian_matches_differences(const Plant& plant, const Mode& mode,
+                                         const std::vector<double>& x) {
+  const std::size_t n = x.size();
+  std::vector<double> J(n * n), dfdt(n);
+  ASSERT_TRUE(plant.jacobian(mode, x, 0.0, J, dfdt));
+  for (std::size_t j = 0; j < n; ++j) {
+    // Step ~ cube root of epsilon relative to the state's magnitude (pressures ~1e5 Pa).
+    const double h = 6e-6 * std::max(std::abs(x[j]), 1e-3);
+    std::vector<double> xp = x, xm = x, fp(n), fm(n);
+    xp[j] += h;
+    xm[j] -= h;
+    plant.derivative(mode, xp, fp, 0.0);
+    plant.derivative(mode, xm, fm, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double scale = 1e-12;
+      for (std::size_t k = 0; k < n; ++k) scale = std::max(scale, std::abs(J[i * n + k]));
+      // Relative to the row's largest entry: truncation and rounding of the differences.
+      EXPECT_NEAR(J[i * n + j] / scale, (fp[i] - fm[i]) / (2.0 * h) / scale, 1e-6)
+          << "row " << i << " column " << j;
+    }
+  }
+  for (double d : dfdt) EXPECT_EQ(d, 0.0);  // the plant is autonomous
+}
+
+TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
+  Scenario s = simple_rig_scenario();
+  s.friction.coulomb_gain_N_per_Pa = 8e-6;  // pressure dependence couples friction to P1, P2
+  s.friction.static_gain_N_per_Pa = 12e-6;
+  const Plant simple(s);
+  std::vector<double> x = simple.initial_state();
+  const StateLayout& L = simple.layout();
+  x[L.x] = 0.2;
+  x[L.v] = 0.05;
+  x[L.P1] = 3.0e5;
+  x[L.P2] = 2.0e5;
+  expect_jacobian_matches_differences(simple, simple.sliding_mode(+1), x);
+  x[L.v] = 0.0;
+  Mode stuck;
+  stuck.value[0] = static_cast<std::int8_t>(ContactMode::kStuck);
+  expect_jacobian_matches_differences(simple, stuck, x);
+  std::vector<double> J(L.size * L.size), dfdt(L.size);
+  simple.jacobian(stuck, x, 0.0, J, dfdt);
+  for (std::size_t j = 0; j < L.size; ++j) {
+    EXPECT_EQ(J[L.x * L.size + j], 0.0);
+    EXPECT_EQ(J[L.v * L.size + j], 0.0);
+  }
+
+  const Plant rig(default_scenario());  // LuGre on both contacts, spring-coupled load
+  std::vector<double> y = rig.initial_state();
+  const StateLayout& R = rig.layout();
+  y[R.x] = 0.42;
+  y[R.v] = 0.06;
+  y[R.P1] = 3.2e5;
+  y[R.P2] = 2.6e5;
+  y[R.seal_z] = 2e-4;
+  y[R.load_x] = 0.419;
+  y[R.load_v] = 0.05;
+  y[R.guide_z] = 5e-5;
+  expect_jacobian_matches_differences(rig, rig.sliding_mode(+1), y);
 }
 
 }  // namespace

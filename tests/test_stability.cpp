@@ -28,8 +28,8 @@ const std::vector<std::string> kWideStribeck{"friction.vs_mm_per_s=40",
                                              "friction.stribeck_exponent=1"};
 
 TEST(Equilibrium, ChokedMeterOutSpeedAndForceBalance) {
-  const Plant plant(scenario({"friction.model=classic"}));
-  const auto& s = plant.scenario();
+  const Scenario s = scenario({"friction.model=classic"});
+  const Plant plant(s);
   const EquilibriumResult eqs = find_equilibria(plant);
   ASSERT_EQ(eqs.equilibria.size(), 1u);
   const Equilibrium& e = eqs.primary();
@@ -61,6 +61,31 @@ TEST(Equilibrium, NoSteadyMotionIsAResultWithAReason) {
   const StabilityResult s = analyze_stability(stuck);
   EXPECT_EQ(s.verdict_full, StabilityVerdict::kNoEquilibrium);
   EXPECT_FALSE(s.reason.empty());
+}
+
+// Issue 16 finding 2: an exhaust far wider than the supply (or a supply all but shut) made
+// the chamber-1 balance unbracketable and ended in an internal error (exit 70).
+TEST(Equilibrium, ExhaustTooWideForTheSupplyIsAResultNamingBothKeys) {
+  for (const char* set : {"circuit.S2_mm2=1e10", "circuit.S1_mm2=1e-12"}) {
+    const Plant plant(scenario({set}));
+    EquilibriumResult r;
+    ASSERT_NO_THROW(r = find_equilibria(plant)) << set;
+    EXPECT_FALSE(r.exists()) << set;
+    EXPECT_NE(r.reason.find("circuit.S1_mm2"), std::string::npos) << r.reason;
+    EXPECT_NE(r.reason.find("circuit.S2_mm2"), std::string::npos) << r.reason;
+  }
+}
+
+TEST(StabilityMap, MarksAPointWithoutSteadyMotionAndGoesOn) {
+  const std::vector<GridAxis> axes{{"circuit.S2_mm2", {0.35, 0.5, 1e10}}};
+  StabilityMap map;
+  ASSERT_NO_THROW(map = stability_map(scenario({}), axes));
+  ASSERT_EQ(map.points.size(), 3u);
+  EXPECT_TRUE(map.points[0].result.has_equilibrium());
+  EXPECT_TRUE(map.points[1].result.has_equilibrium());
+  EXPECT_FALSE(map.points[2].result.has_equilibrium());
+  EXPECT_FALSE(map.points[2].result.reason.empty());
+  EXPECT_EQ(map.with_equilibrium, 2u);
 }
 
 class JacobianTest : public ::testing::TestWithParam<std::vector<std::string>> {};
@@ -122,12 +147,12 @@ TEST(Stability, NegativeStribeckSlopeIsSelfExcitedByBothAnalyses) {
 }
 
 TEST(Stability, MeterInUsesB1) {
-  const Plant plant(scenario({"circuit.kind=meter-in", "friction.model=classic"}));
-  const StabilityResult r = analyze_stability(plant);
+  const Scenario s = scenario({"circuit.kind=meter-in", "friction.model=classic"});
+  const Plant plant(s);
+  const StabilityResult r = analyze_stability(plant, {.circuit = CircuitKind::kMeterIn});
   ASSERT_TRUE(r.has_equilibrium());
   EXPECT_GT(r.paper.b1, 0.0);
   // b m equals k m R T Cd1 Ps / (V10 P10) when the supply is choked (eq. 11 from eq. 10).
-  const auto& s = plant.scenario();
   const double m = s.load.mass_kg;
   EXPECT_NEAR(r.paper.b1 - s.friction.viscous_Ns_per_m, r.paper.b * m, 1e-6 * r.paper.b * m);
   EXPECT_EQ(r.verdict_full, StabilityVerdict::kDamped);

@@ -29,14 +29,14 @@ TEST(VirtualRig, DefaultIsThePapersChaoticPoint) {
 
 TEST(VirtualRig, ModelExponentIsPositiveAndConfirmed) {
   const Plant plant(default_scenario());
-  const ModelLyapunovResult a = plant_lyapunov(plant, measuring(40.0));
+  const ModelLyapunovResult a = plant_lyapunov(plant, default_scenario().run, measuring(40.0));
   ASSERT_TRUE(a.ok) << a.message;
   EXPECT_GT(a.lambda_per_s, 0.5);
   EXPECT_GT(a.lambda_per_s, 3.0 * a.uncertainty_per_s);
   // Confirmed at half the integration tolerance and another initial separation.
   ModelLyapunovOptions other = measuring(40.0);
   other.separation = 3e-4;
-  const ModelLyapunovResult b = plant_lyapunov(plant, other, 0.5);
+  const ModelLyapunovResult b = plant_lyapunov(plant, default_scenario().run, other, 0.5);
   ASSERT_TRUE(b.ok) << b.message;
   EXPECT_GT(b.lambda_per_s, 0.5);
   EXPECT_NEAR(a.lambda_per_s, b.lambda_per_s,
@@ -47,7 +47,7 @@ TEST(VirtualRig, PeriodicPointOfTheSameScenarioIsNeutral) {
   Scenario s = default_scenario();
   apply_overrides(s, {"circuit.S2_mm2=0.20"});
   const Plant plant(s);
-  const ModelLyapunovResult r = plant_lyapunov(plant, measuring(120.0));
+  const ModelLyapunovResult r = plant_lyapunov(plant, s.run, measuring(120.0));
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_LT(std::abs(r.lambda_per_s), 0.1);
   // ...and its record is judged periodic from the velocity alone.

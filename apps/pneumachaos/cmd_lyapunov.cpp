@@ -54,8 +54,8 @@ Action add_lyapunov(CLI::App& app) {
                           {"lyapunov.separation", "--separation"},
                           {"relative_tolerance", "--tolerance-factor"},
                           {"absolute_tolerance", "--tolerance-factor"}};
-    const ModelLyapunovResult r =
-        with_flag_names(flags, [&] { return plant_lyapunov(plant, o, args->tolerance_factor); });
+    const ModelLyapunovResult r = with_flag_names(
+        flags, [&] { return plant_lyapunov(plant, scenario.run, o, args->tolerance_factor); });
     if (!r.ok) {
       fmt::print(stderr, "lyapunov: {}\n", r.message);
       return kExitRunFailed;

@@ -47,11 +47,13 @@ Action add_stability(CLI::App& app) {
       }
       options.equilibrium.position_m = *args->position_mm * 1e-3;
     }
+    options.circuit = scenario.circuit.kind;
     if (!args->map) {
       if (!args->grids.empty()) throw Error("--grid", "needs --map");
       const Plant plant(scenario);
       const StabilityResult r = analyze_stability(plant, options);
-      fmt::print("{}", args->json ? stability_json(plant, r) + "\n" : stability_table(plant, r));
+      fmt::print("{}",
+                 args->json ? stability_json(scenario, r) + "\n" : stability_table(scenario, r));
       return kExitOk;
     }
     std::vector<GridAxis> axes;

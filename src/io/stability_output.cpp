@@ -17,8 +17,7 @@ const char* circuit_name(const Scenario& s) {
 
 }  // namespace
 
-std::string stability_table(const Plant& plant, const StabilityResult& r) {
-  const Scenario& s = plant.scenario();
+std::string stability_table(const Scenario& s, const StabilityResult& r) {
   const double Pa = s.ambient_pressure_Pa;
   std::string out = fmt::format(
       "circuit {}, S1 = {:.3g} mm^2, S2 = {:.3g} mm^2, Ps = {:.3g} MPa gauge, m = {:.3g} kg\n",
@@ -54,8 +53,7 @@ std::string stability_table(const Plant& plant, const StabilityResult& r) {
   return out;
 }
 
-std::string stability_json(const Plant& plant, const StabilityResult& r) {
-  const Scenario& s = plant.scenario();
+std::string stability_json(const Scenario& s, const StabilityResult& r) {
   const double Pa = s.ambient_pressure_Pa;
   nlohmann::json j;
   j["circuit"] = circuit_name(s);

@@ -2,49 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "friction_models.hpp"
 
 namespace pneumachaos {
-
-double FrictionModel::texture_factor(const FrictionInput& in) const {
-  double f = 1.0;
-  for (const TextureMode& m : p_.texture) {
-    f += m.amplitude * std::sin(m.wavenumber_per_m * in.position_m + m.phase);
-  }
-  return f;
-}
-
-double FrictionModel::stribeck_weight(double speed) const {
-  const double u = std::abs(speed) / p_.stribeck_velocity_m_per_s;
-  const double delta = p_.stribeck_exponent;
-  // The common exponents avoid pow(), which dominated the derivative's cost.
-  const double w = delta == 2.0   ? u * u
-                   : delta == 1.0 ? u
-                   : delta == 0.5 ? std::sqrt(u)
-                                  : std::pow(u, delta);
-  return std::exp(-w);
-}
-
-double FrictionModel::stribeck_level_N(const FrictionInput& in, double speed) const {
-  const double fc = coulomb_N(in);
-  return fc + (static_N(in) - fc) * stribeck_weight(speed);
-}
-
-double FrictionModel::stribeck_dspeed(const FrictionInput& in, double speed) const {
-  const double vs = p_.stribeck_velocity_m_per_s;
-  const double u = std::abs(speed) / vs;
-  const double delta = p_.stribeck_exponent;
-  if (u == 0.0) return delta > 1.0 ? 0.0 : -std::numeric_limits<double>::infinity();
-  return -(static_N(in) - coulomb_N(in)) * stribeck_weight(speed) * delta *
-         std::pow(u, delta - 1.0) / vs;
-}
-
-double FrictionModel::stribeck_dp(double speed) const {
-  const double w = stribeck_weight(speed);
-  return p_.coulomb_gain_N_per_Pa + (p_.static_gain_N_per_Pa - p_.coulomb_gain_N_per_Pa) * w;
-}
 
 double FrictionModel::steady_slope_Ns_per_m(const FrictionInput& in) const {
   // Central difference with a step small against vs but far above rounding.

@@ -1,5 +1,6 @@
 #pragma once
-// The concrete friction models; private to the model module (use make_friction_model).
+// The concrete friction models; private to the model module (use make_friction_model). Their
+// laws are the templates of friction_laws.hpp, shared with the Plant's right-hand side.
 
 #include "pneumachaos/model/friction.hpp"
 
@@ -16,11 +17,6 @@ class StictionFriction final : public FrictionModel {
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
                                        std::span<const double> z) const override;
   [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
-  [[nodiscard]] FrictionPartials partials(const FrictionInput& in, int direction,
-                                          std::span<const double> z) const override;
-
- private:
-  [[nodiscard]] double sliding_level_N(const FrictionInput& in, double speed) const;
 };
 
 /// Canudas de Wit, Olsson, Astrom & Lischinsky (1995), IEEE TAC 40(3): bristle model
@@ -35,8 +31,6 @@ class LuGreFriction final : public FrictionModel {
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
                                        std::span<const double> z) const override;
   [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
-  [[nodiscard]] FrictionPartials partials(const FrictionInput& in, int direction,
-                                          std::span<const double> z) const override;
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 

@@ -3,43 +3,47 @@
 #include <algorithm>
 #include <cmath>
 
+#include "plant_equations.hpp"
+
 namespace pneumachaos {
 namespace {
 
-constexpr std::size_t kSeal = 0;
-constexpr std::size_t kGuide = 1;
+using plant_detail::direction_of;
+using plant_detail::kGuide;
+using plant_detail::kSeal;
+using plant_detail::mode_of;
+using plant_detail::moving;
 
-ContactMode mode_of(const Mode& m, std::size_t contact) {
-  return static_cast<ContactMode>(m.value[contact]);
-}
 void set_mode(Mode& m, std::size_t contact, ContactMode c) {
   m.value[contact] = static_cast<std::int8_t>(c);
-}
-bool moving(ContactMode m) { return m != ContactMode::kStuck && m != ContactMode::kAtStop; }
-int direction_of(ContactMode m) {
-  return m == ContactMode::kSlidePos ? 1 : (m == ContactMode::kSlideNeg ? -1 : 0);
 }
 
 }  // namespace
 
-Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
-  scenario_.validate();
-  A1_ = scenario_.cylinder.area_head_m2();
-  A2_ = scenario_.cylinder.area_rod_m2();
+Plant::Plant(const Scenario& scenario)
+    : geometry_(scenario.cylinder),
+      load_(scenario.load),
+      ambient_Pa_(scenario.ambient_pressure_Pa),
+      supply_Pa_(scenario.supply_pressure_Pa()),
+      polytropic_exponent_(scenario.polytropic_exponent),
+      RT_(scenario.gas.R_J_per_kgK * scenario.temperature_K) {
+  scenario.validate();
+  A1_ = geometry_.area_head_m2();
+  A2_ = geometry_.area_rod_m2();
   // Chamber and supply air share one temperature (no energy equation), so each valve's
   // upstream temperature is the same in either flow direction.
-  valve1_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S1(), scenario_.temperature_K);
-  valve2_.emplace(scenario_.valve, scenario_.gas, scenario_.circuit.S2(), scenario_.temperature_K);
-  seal_ = make_friction_model(scenario_.friction);
+  valve1_.emplace(scenario.valve, scenario.gas, scenario.circuit.S1(), scenario.temperature_K);
+  valve2_.emplace(scenario.valve, scenario.gas, scenario.circuit.S2(), scenario.temperature_K);
+  seal_ = make_friction_model(scenario.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
     layout_.seal_z = layout_.append("z", "m", layout_.seal_z_count);
   }
-  const bool spring = scenario_.load.coupling == LoadCoupling::kSpring;
-  piston_mass_ = spring ? scenario_.load.piston_mass_kg : scenario_.load.mass_kg;
+  const bool spring = load_.coupling == LoadCoupling::kSpring;
+  piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
   if (spring) {
     contacts_ = 2;
-    guide_ = make_friction_model(scenario_.load.guide_friction);
+    guide_ = make_friction_model(load_.guide_friction);
     layout_.load_x = layout_.append("x_load", "m");
     layout_.load_v = layout_.append("v_load", "m/s");
     if (guide_->state_count() > 0) {
@@ -51,33 +55,13 @@ Plant::Plant(const Scenario& scenario) : scenario_(scenario) {
 
 std::vector<double> Plant::initial_state() const {
   std::vector<double> x(layout_.size, 0.0);
-  x[layout_.P1] = scenario_.ambient_pressure_Pa;
-  x[layout_.P2] = scenario_.supply_pressure_Pa();
+  x[layout_.P1] = ambient_Pa_;
+  x[layout_.P2] = supply_Pa_;
   return x;
 }
 
 std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
-  return {valve1_->mass_flow(scenario_.supply_pressure_Pa(), P1_Pa),
-          valve2_->mass_flow(P2_Pa, scenario_.ambient_pressure_Pa)};
-}
-
-double Plant::drive_force(std::size_t contact, std::span<const double> x) const {
-  const double Pa = scenario_.ambient_pressure_Pa;
-  const auto& L = layout_;
-  double coupling = 0.0;
-  if (contacts_ == 2) {
-    coupling = scenario_.load.coupling_stiffness_N_per_m * (x[L.x] - x[L.load_x]) +
-               scenario_.load.coupling_damping_Ns_per_m * (x[L.v] - x[L.load_v]);
-  }
-  if (contact == kGuide) return coupling - scenario_.load.external_force_N;
-  const double pneumatic = A1_ * (x[L.P1] - Pa) - A2_ * (x[L.P2] - Pa);
-  return pneumatic - (contacts_ == 2 ? coupling : scenario_.load.external_force_N);
-}
-
-FrictionInput Plant::friction_input(std::size_t contact, std::span<const double> x) const {
-  const auto& L = layout_;
-  if (contact == kGuide) return {x[L.load_v], 0.0, x[L.load_x]};
-  return {x[L.v], x[L.P1] + x[L.P2] - 2.0 * scenario_.ambient_pressure_Pa, x[L.x]};
+  return {valve1_->mass_flow(supply_Pa_, P1_Pa), valve2_->mass_flow(P2_Pa, ambient_Pa_)};
 }
 
 double Plant::holding_force(std::size_t contact, std::span<const double> x) const {
@@ -85,56 +69,16 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
   const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
   const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
   const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
-  return f.holding_force_N(friction_input(contact, x),
+  return f.holding_force_N(friction_input<double>(contact, x),
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
-double Plant::friction_force(std::size_t contact, ContactMode m, std::span<const double> x,
-                             std::span<double> dz) const {
-  const auto& L = layout_;
-  const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
-  const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
-  const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
-  const auto z = nz == 0 ? std::span<const double>{} : x.subspan(z0, nz);
-  if (!moving(m)) {
-    std::fill(dz.begin(), dz.end(), 0.0);  // bristles neither deflect nor relax at rest
-    return 0.0;
-  }
-  return f.force_N(friction_input(contact, x), direction_of(m), z, dz);
-}
+double Plant::head_pressure_rate(std::span<const double> x) const { return head_chamber_rate(x); }
+double Plant::rod_pressure_rate(std::span<const double> x) const { return rod_chamber_rate(x); }
 
 void Plant::derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
                        double /*t*/) const {
-  const auto& L = layout_;
-  const double k = scenario_.polytropic_exponent;
-  const double RT = scenario_.gas.R_J_per_kgK * scenario_.temperature_K;
-  const double xp = x[L.x];
-  const double vp = x[L.v];
-  const double P1 = x[L.P1];
-  const double P2 = x[L.P2];
-  const double V1 = scenario_.cylinder.volume_head_m3(xp);
-  const double V2 = scenario_.cylinder.volume_rod_m3(xp);
-  const auto [W1, W2] = mass_flows(P1, P2);
-  dxdt[L.P1] = k * RT / V1 * W1 - k * P1 * A1_ / V1 * vp;   // eq. (2)
-  dxdt[L.P2] = -k * RT / V2 * W2 + k * P2 * A2_ / V2 * vp;  // eq. (3)
-
-  const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
-                        std::size_t nz, double mass) {
-    const ContactMode m = mode_of(mode, contact);
-    std::span<double> dz = nz == 0 ? std::span<double>{} : dxdt.subspan(iz, nz);
-    const double friction = friction_force(contact, m, x, dz);
-    if (moving(m)) {
-      dxdt[ix] = x[iv];
-      dxdt[iv] = (drive_force(contact, x) - friction) / mass;  // eq. (1)
-    } else {
-      dxdt[ix] = 0.0;
-      dxdt[iv] = 0.0;
-    }
-  };
-  body(kSeal, L.x, L.v, L.seal_z, L.seal_z_count, piston_mass_);
-  if (contacts_ == 2) {
-    body(kGuide, L.load_x, L.load_v, L.guide_z, L.guide_z_count, scenario_.load.mass_kg);
-  }
+  evaluate(mode, x, dxdt);
 }
 
 Plant::EventList Plant::active_events(const Mode& mode) const {
@@ -150,7 +94,7 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
       if (m != ContactMode::kSlidePos) add(EventType::kStopHit, c);
-      if (!scenario_.cylinder.volumes_frozen()) add(EventType::kStrokeEnd, c);
+      if (!geometry_.volumes_frozen()) add(EventType::kStrokeEnd, c);
     }
   }
   return list;
@@ -170,16 +114,16 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
         g[i] = direction_of(mode_of(mode, c)) * x[iv];
         break;
       case EventType::kBreakaway:
-        g[i] = holding_force(c, x) - std::abs(drive_force(c, x));
+        g[i] = holding_force(c, x) - std::abs(drive_force<double>(c, x));
         break;
       case EventType::kStopRelease:
-        g[i] = holding_force(c, x) - drive_force(c, x);
+        g[i] = holding_force(c, x) - drive_force<double>(c, x);
         break;
       case EventType::kStopHit:
         g[i] = x[L.x];
         break;
       case EventType::kStrokeEnd:
-        g[i] = scenario_.cylinder.stroke_m - x[L.x];
+        g[i] = geometry_.stroke_m - x[L.x];
         break;
     }
   }
@@ -187,7 +131,7 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
 
 ContactMode Plant::rest_mode(std::size_t contact, std::span<const double> x, bool at_stop) const {
   const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
-  const double drive = drive_force(contact, x);
+  const double drive = drive_force<double>(contact, x);
   const double hold = holding_force(contact, x);
   if (at_stop) {
     if (drive - hold <= 0.0) return ContactMode::kAtStop;
@@ -215,7 +159,8 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       break;
     }
     case EventType::kBreakaway:
-      set_mode(mode, c, drive_force(c, x) > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg);
+      set_mode(mode, c,
+               drive_force<double>(c, x) > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg);
       out.kind = EventKind::kSlip;
       break;
     case EventType::kStopRelease:
@@ -230,7 +175,7 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       out.kind = EventKind::kStopHit;
       break;
     case EventType::kStrokeEnd:
-      x[ix] = scenario_.cylinder.stroke_m;
+      x[ix] = geometry_.stroke_m;
       out.kind = EventKind::kTerminal;
       out.terminate = true;
       out.message = "end of stroke reached";
@@ -287,18 +232,18 @@ PlantOutputs Plant::outputs(const Mode& mode, std::span<const double> x) const {
   std::array<double, 8> scratch{};
   const auto reported = [&](std::size_t c) {
     const ContactMode m = mode_of(mode, c);
-    const double drive = drive_force(c, x);
+    const double drive = drive_force<double>(c, x);
     if (m == ContactMode::kStuck) return drive;  // static friction balances the drive
     if (m == ContactMode::kAtStop) {
       // The stop takes whatever pushes into it; friction holds at most its holding force.
       return seal_->has_stiction() ? std::clamp(drive, 0.0, holding_force(c, x))
                                    : holding_force(c, x);
     }
-    return friction_force(c, m, x, std::span<double>(scratch.data(), 4));
+    return friction_force<double>(c, m, x, std::span<double>(scratch.data(), 4));
   };
   out.seal_friction_N = reported(kSeal);
   if (contacts_ == 2) out.guide_friction_N = reported(kGuide);
-  out.drive_force_N = drive_force(kSeal, x);
+  out.drive_force_N = drive_force<double>(kSeal, x);
   const auto [W1, W2] = mass_flows(x[layout_.P1], x[layout_.P2]);
   out.W1_kg_per_s = W1;
   out.W2_kg_per_s = W2;

@@ -77,7 +77,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
   ModelLyapunovOptions lo;
   lo.measure_s = o.quick ? 10.0 : 40.0;
-  const ModelLyapunovResult model = plant_lyapunov(Plant(base), lo);
+  const ModelLyapunovResult model = plant_lyapunov(Plant(base), base.run, lo);
   for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), a, model.running_time_s,
                                                model.running_per_s)) {
     add(f);

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "pneumachaos/core/error.hpp"
 #include "steppers.hpp"
@@ -25,6 +27,9 @@ struct ModeRhs {
     ++*evaluations;
     dxdt.resize(x.size());
     system->derivative(*mode, x, dxdt, t);
+  }
+  bool jacobian(const State& x, double t, State& dfdx, State& dfdt) const {
+    return system->jacobian(*mode, x, t, dfdx, dfdt);
   }
 };
 
@@ -84,141 +89,198 @@ class Sampler {
   State buffer_;
 };
 
+// One integration of a hybrid system: smooth steps of `Stepper`, each checked for events; the
+// earliest event in a step is located on the dense output, the samples up to it are emitted,
+// and the system's transition is applied before the stepper restarts from there.
 template <typename Stepper>
-IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const IntegratorOptions& o,
-                       const SampleObserver& observer) {
-  IntegrationSummary s;
-  Stepper stepper(ModeRhs{&system, &mode, &s.rhs_evaluations}, o.absolute_tolerance,
-                  o.relative_tolerance);
-  Sampler sampler(o, observer);
-  double t = o.t_start_s;
-  stepper.initialize(x, t);
-  sampler.emit_until(t, mode, [&](double, State& out) { out = x; });
+class HybridRun {
+ public:
+  HybridRun(const HybridSystem& system, State& x, Mode& mode, const IntegratorOptions& o,
+            const SampleObserver& observer)
+      : system_(system),
+        x_(x),
+        mode_(mode),
+        o_(o),
+        stepper_(ModeRhs{&system, &mode, &s_.rhs_evaluations}, o.absolute_tolerance,
+                 o.relative_tolerance),
+        sampler_(o, observer),
+        t_(o.t_start_s),
+        dt_(std::min(o.initial_step_s, o.max_step_s)) {}
 
-  State g_old, g_new, scratch;
-  const auto events = [&](const State& state, double time, State& g) {
-    g.resize(system.event_count(mode));
-    system.event_functions(mode, state, time, g);
+  IntegrationSummary run() {
+    stepper_.initialize(x_, t_);
+    sampler_.emit_until(t_, mode_, [&](double, State& out) { out = x_; });
+    events(x_, t_, g_old_);
+    while (t_ < o_.t_end_s) {
+      const StepResult step = try_one_step();
+      if (step == StepResult::kFailed) break;
+      if (step == StepResult::kRejected) continue;
+      events(stepper_.state(), stepper_.t_new(), g_new_);
+      const Located event = earliest_event();
+      if (event.which == g_new_.size()) {
+        accept_smooth_step();
+      } else if (!cross_event(event)) {
+        break;
+      }
+    }
+    s_.t_final_s = t_;
+    if (s_.termination == Termination::kDurationReached && s_.message.empty()) {
+      s_.message = "duration reached";
+    }
+    return s_;
+  }
+
+ private:
+  enum class StepResult { kAccepted, kRejected, kFailed };
+  struct Located {
+    std::size_t which;  // index of the event function; g_new_.size() when none fired
+    double t;
   };
-  events(x, t, g_old);
 
-  double dt = std::min(o.initial_step_s, o.max_step_s);
-  double last_event_t = -std::numeric_limits<double>::infinity();
-  std::size_t events_here = 0;
-  const double t_tiny = 64 * std::numeric_limits<double>::epsilon();
+  [[nodiscard]] double tiny(double t) const { return kTiny * std::max(1.0, std::abs(t)); }
 
-  while (t < o.t_end_s) {
-    if (s.steps_accepted + s.steps_rejected >= o.max_steps) {
-      s.termination = Termination::kSolverFailure;
-      s.message = fmt::format(
+  StepResult fail(std::string message) {
+    s_.termination = Termination::kSolverFailure;
+    s_.message = std::move(message);
+    return StepResult::kFailed;
+  }
+
+  void events(const State& state, double time, State& g) const {
+    g.resize(system_.event_count(mode_));
+    system_.event_functions(mode_, state, time, g);
+  }
+
+  // One controlled step from t_, bounded by the largest step and the end of the run.
+  StepResult try_one_step() {
+    if (s_.steps_accepted + s_.steps_rejected >= o_.max_steps) {
+      return fail(fmt::format(
           "step limit of {} reached at t = {} s: the model needs far smaller steps than a "
           "pneumatic drive should (check run.max_step_ms, friction stiffness sigma0 and the "
           "forces), or try run.stepper = \"rosenbrock4\"",
-          o.max_steps, t);
-      break;
+          o_.max_steps, t_));
     }
-    dt = std::min({dt, o.max_step_s, o.t_end_s - t});
+    dt_ = std::min({dt_, o_.max_step_s, o_.t_end_s - t_});
     // Land exactly on t_end instead of leaving a sliver step.
-    if (o.t_end_s - (t + dt) < t_tiny * std::max(1.0, std::abs(t))) dt = o.t_end_s - t;
-    if (!stepper.try_step(dt)) {
-      ++s.steps_rejected;
-      if (dt < t_tiny * std::max(1.0, std::abs(t))) {
-        s.termination = Termination::kSolverFailure;
-        s.message = fmt::format("step size underflow at t = {} s", t);
-        break;
-      }
-      continue;
+    if (o_.t_end_s - (t_ + dt_) < tiny(t_)) dt_ = o_.t_end_s - t_;
+    if (!stepper_.try_step(dt_)) {
+      ++s_.steps_rejected;
+      if (dt_ < tiny(t_)) return fail(fmt::format("step size underflow at t = {} s", t_));
+      return StepResult::kRejected;
     }
-    ++s.steps_accepted;
-    const State& x_new = stepper.state();
-    const double t_new = stepper.t_new();
-    if (!all_finite(x_new)) {
-      s.termination = Termination::kSolverFailure;
-      s.message = fmt::format("non-finite state at t = {} s", t_new);
-      break;
+    ++s_.steps_accepted;
+    if (!all_finite(stepper_.state())) {
+      return fail(fmt::format("non-finite state at t = {} s", stepper_.t_new()));
     }
-    events(x_new, t_new, g_new);
+    return StepResult::kAccepted;
+  }
 
-    // Earliest event that fired in this step (g went from >= 0 to < 0).
-    std::size_t which = g_new.size();
-    double t_event = t_new;
-    for (std::size_t i = 0; i < g_new.size(); ++i) {
-      if (!(g_new[i] < 0.0)) continue;
-      const auto g_at = [&](double tau) {
-        stepper.calc_state(tau, scratch);
-        events(scratch, tau, g_new);
-        return g_new[i];
-      };
-      // The transition is applied where g is strictly negative: at a point where g is still
-      // exactly zero (e.g. a drive force of exactly 0 at rest) the new mode is undecidable.
-      double lower = stepper.t_old();
-      double upper = t_new;
-      if (g_old[i] > 0.0) {
-        std::uintmax_t iterations = 64;
-        const auto bracket = boost::math::tools::toms748_solve(
-            g_at, lower, upper, g_old[i], g_at(upper),
-            boost::math::tools::eps_tolerance<double>(50), iterations);
-        lower = bracket.first;
-        upper = bracket.second;
-      }
-      if (!(g_at(upper) < 0.0)) upper = t_new;
-      // Bisection on "g < 0" narrows a degenerate start (g = 0 at t_old) or an exact root.
-      while (upper - lower > t_tiny * std::max(1.0, std::abs(upper))) {
-        const double mid = 0.5 * (lower + upper);
-        if (mid <= lower || mid >= upper) break;
-        (g_at(mid) < 0.0 ? upper : lower) = mid;
-      }
-      if (upper < t_event || which == g_new.size()) {
-        t_event = upper;
-        which = i;
-      }
-      events(x_new, t_new, g_new);  // restore for the remaining comparisons
-    }
-
-    const auto interp = [&](double tau, State& out) {
-      if (tau >= t_new) {
-        out = x_new;
-      } else {
-        stepper.calc_state(tau, out);
-      }
+  // Where event function i, negative at the end of the step, first becomes negative.
+  double event_time(std::size_t i) {
+    const double t_new = stepper_.t_new();
+    const auto g_at = [&](double tau) {
+      stepper_.calc_state(tau, scratch_);
+      events(scratch_, tau, g_new_);
+      return g_new_[i];
     };
-    if (which == g_new.size()) {
-      sampler.emit_until(t_new, mode, interp);
-      t = t_new;
-      x = x_new;
-      std::swap(g_old, g_new);
-      continue;
+    // The transition is applied where g is strictly negative: at a point where g is still
+    // exactly zero (e.g. a drive force of exactly 0 at rest) the new mode is undecidable.
+    double lower = stepper_.t_old();
+    double upper = t_new;
+    if (g_old_[i] > 0.0) {
+      std::uintmax_t iterations = 64;
+      const auto bracket = boost::math::tools::toms748_solve(
+          g_at, lower, upper, g_old_[i], g_at(upper), boost::math::tools::eps_tolerance<double>(50),
+          iterations);
+      lower = bracket.first;
+      upper = bracket.second;
     }
+    if (!(g_at(upper) < 0.0)) upper = t_new;
+    // Bisection on "g < 0" narrows a degenerate start (g = 0 at t_old) or an exact root.
+    while (upper - lower > tiny(upper)) {
+      const double mid = 0.5 * (lower + upper);
+      if (mid <= lower || mid >= upper) break;
+      (g_at(mid) < 0.0 ? upper : lower) = mid;
+    }
+    events(stepper_.state(), t_new, g_new_);  // restore for the remaining comparisons
+    return upper;
+  }
 
-    sampler.emit_until(t_event, mode, interp);
-    interp(t_event, x);
-    events_here =
-        (t_event - last_event_t <= t_tiny * std::max(1.0, std::abs(t_event))) ? events_here + 1 : 1;
-    last_event_t = t_event;
-    if (events_here > o.max_events_at_one_instant) {
-      s.termination = Termination::kChattering;
-      s.message = fmt::format("more than {} events at t = {} s (chattering)",
-                              o.max_events_at_one_instant, t_event);
-      t = t_event;
-      break;
+  // The earliest event that fired in the last step (g went from >= 0 to < 0).
+  Located earliest_event() {
+    Located first{g_new_.size(), stepper_.t_new()};
+    for (std::size_t i = 0; i < g_new_.size(); ++i) {
+      if (!(g_new_[i] < 0.0)) continue;
+      const double t = event_time(i);
+      if (t < first.t || first.which == g_new_.size()) first = {i, t};
     }
-    const EventOutcome outcome = system.apply_event(which, mode, x, t_event);
-    count_event(s.events, outcome.kind);
-    if (o.record_events) s.event_log.push_back({t_event, outcome.kind});
-    t = t_event;
+    return first;
+  }
+
+  void interpolate(double tau, State& out) {
+    if (tau >= stepper_.t_new()) {
+      out = stepper_.state();
+    } else {
+      stepper_.calc_state(tau, out);
+    }
+  }
+
+  void accept_smooth_step() {
+    const auto interp = [&](double tau, State& out) { interpolate(tau, out); };
+    sampler_.emit_until(stepper_.t_new(), mode_, interp);
+    t_ = stepper_.t_new();
+    x_ = stepper_.state();
+    std::swap(g_old_, g_new_);
+  }
+
+  // Moves to the event, applies the system's transition and restarts the stepper there;
+  // false when the run ends (terminal event or chattering).
+  bool cross_event(const Located& event) {
+    const auto interp = [&](double tau, State& out) { interpolate(tau, out); };
+    sampler_.emit_until(event.t, mode_, interp);
+    interpolate(event.t, x_);
+    events_here_ = (event.t - last_event_t_ <= tiny(event.t)) ? events_here_ + 1 : 1;
+    last_event_t_ = event.t;
+    if (events_here_ > o_.max_events_at_one_instant) {
+      s_.termination = Termination::kChattering;
+      s_.message = fmt::format("more than {} events at t = {} s (chattering)",
+                               o_.max_events_at_one_instant, event.t);
+      t_ = event.t;
+      return false;
+    }
+    const EventOutcome outcome = system_.apply_event(event.which, mode_, x_, event.t);
+    count_event(s_.events, outcome.kind);
+    if (o_.record_events) s_.event_log.push_back({event.t, outcome.kind});
+    t_ = event.t;
     if (outcome.terminate) {
-      s.termination = Termination::kTerminalEvent;
-      s.message = outcome.message;
-      break;
+      s_.termination = Termination::kTerminalEvent;
+      s_.message = outcome.message;
+      return false;
     }
-    stepper.initialize(x, t);
-    events(x, t, g_old);
+    stepper_.initialize(x_, t_);
+    events(x_, t_, g_old_);
+    return true;
   }
-  s.t_final_s = t;
-  if (s.termination == Termination::kDurationReached && s.message.empty()) {
-    s.message = "duration reached";
-  }
-  return s;
+
+  static constexpr double kTiny = 64 * std::numeric_limits<double>::epsilon();
+
+  const HybridSystem& system_;
+  State& x_;
+  Mode& mode_;
+  const IntegratorOptions& o_;
+  IntegrationSummary s_;  // before stepper_: the stepper counts into it
+  Stepper stepper_;
+  Sampler sampler_;
+  double t_;
+  double dt_;
+  double last_event_t_ = -std::numeric_limits<double>::infinity();
+  std::size_t events_here_ = 0;
+  State g_old_, g_new_, scratch_;
+};
+
+template <typename Stepper>
+IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const IntegratorOptions& o,
+                       const SampleObserver& observer) {
+  return HybridRun<Stepper>(system, x, mode, o, observer).run();
 }
 
 }  // namespace

@@ -4,11 +4,151 @@
 
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 
 namespace pneumachaos {
+
+namespace {
+
+// Euclidean distance with each state divided by its scale; states of scale 0 are left out.
+double scaled_distance(const std::vector<double>& scale, const std::vector<double>& a,
+                       const std::vector<double>& b) {
+  double d2 = 0.0;
+  for (std::size_t i = 0; i < scale.size(); ++i) {
+    if (scale[i] > 0.0) d2 += std::pow((a[i] - b[i]) / scale[i], 2);
+  }
+  return std::sqrt(d2);
+}
+
+// Integration settings of both trajectories: no samples, no event log.
+IntegratorOptions trajectory_options(const ModelLyapunovOptions& o) {
+  IntegratorOptions io;
+  io.relative_tolerance = o.relative_tolerance;
+  io.absolute_tolerance = o.absolute_tolerance;
+  io.max_step_s = o.max_step_s;
+  io.stepper = o.stepper;
+  io.sample_rate_Hz = 0.0;
+  io.record_events = false;
+  return io;
+}
+
+// Standard error of the exponent from the spread of the per-block exponents.
+double block_standard_error(const std::vector<double>& block_log, const ModelLyapunovOptions& o) {
+  const double block_s = o.measure_s / o.blocks;
+  double mean = 0.0, var = 0.0;
+  for (double b : block_log) mean += b / block_s;
+  mean /= o.blocks;
+  for (double b : block_log) var += std::pow(b / block_s - mean, 2);
+  return std::sqrt(var / (o.blocks - 1) / o.blocks);
+}
+
+// Two trajectories side by side, renormalised to the initial separation at fixed intervals
+// (Benettin et al. 1980), each a full hybrid integration.
+class TwoTrajectories {
+ public:
+  TwoTrajectories(const HybridSystem& system, const ModelLyapunovOptions& o,
+                  std::vector<double> scale)
+      : system_(system), o_(o), scale_(std::move(scale)), io_(trajectory_options(o)) {}
+
+  // Integrates the reference through the transient; false (with the message) when it ends.
+  bool settle(const std::vector<double>& x0, ModelLyapunovResult& r) {
+    xr_ = x0;
+    mr_ = system_.initial_mode(xr_, 0.0);
+    if (o_.transient_s > 0.0) {
+      const auto s = advance(xr_, mr_, 0.0, o_.transient_s);
+      if (s.termination != Termination::kDurationReached) {
+        r.ok = false;
+        r.message = fmt::format("the reference run ended in its transient: {}", s.message);
+        return false;
+      }
+      t_ = o_.transient_s;
+    }
+    return true;
+  }
+
+  // The measurement: stretching summed over renormalisations, per block and running.
+  std::vector<double> measure(ModelLyapunovResult& r) {
+    xp_ = xr_;
+    xp_[o_.perturbed_state] += o_.separation * scale_[o_.perturbed_state];
+    mp_ = mr_;
+    t0_ = t_;
+    const double t_end = t0_ + o_.measure_s;
+    std::vector<double> block_log(o_.blocks, 0.0);
+    while (t_ < t_end - 1e-12) {
+      const double next = std::min(t_ + o_.renormalize_s, t_end);
+      if (!advance_both(next, r)) break;
+      t_ = next;
+      if (!(mr_ == mp_) && t_ < t_end) {
+        ++r.postponed;  // renormalise once both are in the same mode again
+        continue;
+      }
+      if (!renormalize(r, block_log)) break;
+    }
+    return block_log;
+  }
+
+  [[nodiscard]] double start_s() const { return t0_; }
+  [[nodiscard]] double log_sum() const { return log_sum_; }  ///< of the stretching factors
+
+ private:
+  IntegrationSummary advance(std::vector<double>& x, Mode& mode, double from, double to) {
+    io_.t_start_s = from;
+    io_.t_end_s = to;
+    return integrate_hybrid(system_, x, mode, io_);
+  }
+
+  bool advance_both(double next, ModelLyapunovResult& r) {
+    const auto a = advance(xr_, mr_, t_, next);
+    const auto b = advance(xp_, mp_, t_, next);
+    if (a.termination == Termination::kDurationReached &&
+        b.termination == Termination::kDurationReached) {
+      return true;
+    }
+    r.ok = false;
+    r.message =
+        fmt::format("a trajectory ended at t = {:.4g} s before the measurement did: {}", next,
+                    a.termination != Termination::kDurationReached ? a.message : b.message);
+    return false;
+  }
+
+  // Records the stretching since the last renormalisation and pulls the perturbed trajectory
+  // back to the initial separation along the same direction.
+  bool renormalize(ModelLyapunovResult& r, std::vector<double>& block_log) {
+    const double d = scaled_distance(scale_, xr_, xp_);
+    if (!(d > 0.0) || !std::isfinite(d)) {
+      r.ok = false;
+      r.message = "the two trajectories coincide or diverged to infinity";
+      return false;
+    }
+    const double gain = std::log(d / o_.separation);
+    log_sum_ += gain;
+    const std::size_t block =
+        std::min(o_.blocks - 1, static_cast<std::size_t>((t_ - t0_) / o_.measure_s * o_.blocks));
+    block_log[block] += gain;
+    for (std::size_t i = 0; i < xp_.size(); ++i) {
+      xp_[i] = xr_[i] + (xp_[i] - xr_[i]) * (o_.separation / d);
+    }
+    mp_ = mr_;
+    ++r.renormalizations;
+    r.running_time_s.push_back(t_);
+    r.running_per_s.push_back(log_sum_ / (t_ - t0_));
+    return true;
+  }
+
+  const HybridSystem& system_;
+  const ModelLyapunovOptions& o_;
+  std::vector<double> scale_;
+  IntegratorOptions io_;
+  std::vector<double> xr_, xp_;  // reference and perturbed states
+  Mode mr_, mp_;
+  double t_ = 0.0, t0_ = 0.0;
+  double log_sum_ = 0.0;
+};
+
+}  // namespace
 
 void ModelLyapunovOptions::validate() const {
   const auto positive = [](double v, const char* name) {
@@ -45,105 +185,29 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
   if (scale.size() != n || o.perturbed_state >= n || scale[o.perturbed_state] <= 0.0) {
     throw Error("lyapunov", "state scales or the perturbed state do not fit the system");
   }
-  const auto distance = [&](const std::vector<double>& a, const std::vector<double>& b) {
-    double d2 = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (scale[i] > 0.0) d2 += std::pow((a[i] - b[i]) / scale[i], 2);
-    }
-    return std::sqrt(d2);
-  };
-  IntegratorOptions io;
-  io.relative_tolerance = o.relative_tolerance;
-  io.absolute_tolerance = o.absolute_tolerance;
-  io.max_step_s = o.max_step_s;
-  io.stepper = o.stepper;
-  io.sample_rate_Hz = 0.0;
-  io.record_events = false;
-  const auto advance = [&](std::vector<double>& x, Mode& mode, double from, double to) {
-    io.t_start_s = from;
-    io.t_end_s = to;
-    return integrate_hybrid(system, x, mode, io);
-  };
-
   ModelLyapunovResult r;
-  std::vector<double> xr = x0;
-  Mode mr = system.initial_mode(xr, 0.0);
-  double t = 0.0;
-  if (o.transient_s > 0.0) {
-    const auto s = advance(xr, mr, 0.0, o.transient_s);
-    if (s.termination != Termination::kDurationReached) {
-      r.ok = false;
-      r.message = fmt::format("the reference run ended in its transient: {}", s.message);
-      return r;
-    }
-    t = o.transient_s;
-  }
-  std::vector<double> xp = xr;
-  xp[o.perturbed_state] += o.separation * scale[o.perturbed_state];
-  Mode mp = mr;
-  const double t0 = t;
-  const double t_end = t0 + o.measure_s;
-  double log_sum = 0.0;
-  std::vector<double> block_log(o.blocks, 0.0);
-  while (t < t_end - 1e-12) {
-    const double next = std::min(t + o.renormalize_s, t_end);
-    const auto a = advance(xr, mr, t, next);
-    const auto b = advance(xp, mp, t, next);
-    if (a.termination != Termination::kDurationReached ||
-        b.termination != Termination::kDurationReached) {
-      r.ok = false;
-      r.message =
-          fmt::format("a trajectory ended at t = {:.4g} s before the measurement did: {}", next,
-                      a.termination != Termination::kDurationReached ? a.message : b.message);
-      break;
-    }
-    t = next;
-    if (!(mr == mp) && t < t_end) {
-      ++r.postponed;  // renormalise once both are in the same mode again
-      continue;
-    }
-    const double d = distance(xr, xp);
-    if (!(d > 0.0) || !std::isfinite(d)) {
-      r.ok = false;
-      r.message = "the two trajectories coincide or diverged to infinity";
-      break;
-    }
-    const double gain = std::log(d / o.separation);
-    log_sum += gain;
-    const std::size_t block =
-        std::min(o.blocks - 1, static_cast<std::size_t>((t - t0) / o.measure_s * o.blocks));
-    block_log[block] += gain;
-    for (std::size_t i = 0; i < n; ++i) xp[i] = xr[i] + (xp[i] - xr[i]) * (o.separation / d);
-    mp = mr;
-    ++r.renormalizations;
-    r.running_time_s.push_back(t);
-    r.running_per_s.push_back(log_sum / (t - t0));
-  }
+  TwoTrajectories pair(system, o, std::move(scale));
+  if (!pair.settle(x0, r)) return r;
+  const std::vector<double> block_log = pair.measure(r);
   if (r.running_per_s.empty()) {
     if (r.message.empty()) r.message = "no renormalisation took place";
     r.ok = false;
     return r;
   }
-  const double measured = r.running_time_s.back() - t0;
-  r.lambda_per_s = log_sum / measured;
-  // Standard error from the spread of the per-block exponents.
-  const double block_s = o.measure_s / o.blocks;
-  double mean = 0.0, var = 0.0;
-  for (double b : block_log) mean += b / block_s;
-  mean /= o.blocks;
-  for (double b : block_log) var += std::pow(b / block_s - mean, 2);
-  r.uncertainty_per_s = std::sqrt(var / (o.blocks - 1) / o.blocks);
+  const double measured = r.running_time_s.back() - pair.start_s();
+  r.lambda_per_s = pair.log_sum() / measured;
+  r.uncertainty_per_s = block_standard_error(block_log, o);
   return r;
 }
 
-ModelLyapunovResult plant_lyapunov(const Plant& plant, ModelLyapunovOptions o,
+ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, ModelLyapunovOptions o,
                                    double tolerance_factor) {
   o.scales = plant.state_scales();
   o.perturbed_state = plant.layout().P1;
   o.relative_tolerance = 1e-9 * tolerance_factor;
   o.absolute_tolerance = 1e-12 * tolerance_factor;
-  o.max_step_s = plant.scenario().run.max_step_s;
-  o.stepper = plant.scenario().run.stepper;
+  o.max_step_s = run.max_step_s;
+  o.stepper = run.stepper;
   return model_lyapunov(plant, plant.initial_state(), o);
 }
 

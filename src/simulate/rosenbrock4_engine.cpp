@@ -18,9 +18,10 @@ using UMat = boost::numeric::ublas::matrix<double>;
 // autonomous system (x, tau) with dtau/dt = 1, where df/dt is an ordinary Jacobian column.
 struct Rosenbrock4Engine::Impl {
   RhsFunction rhs;
+  JacobianFunction exact_jacobian;
   odeint::rosenbrock4_controller<odeint::rosenbrock4<double>> controlled;
   UVec x_old, x_new, x_tmp, x_interp;  // augmented: n states, then time
-  State state, a, f0, f1;
+  State state, a, f0, f1, dfdx, dfdt_exact;
   std::size_t n = 0;
   double t_old = 0.0, t_new = 0.0;
   // Below this magnitude a component counts as small (the error control's own view of it),
@@ -28,8 +29,11 @@ struct Rosenbrock4Engine::Impl {
   // Jacobian noise and Rosenbrock's order collapses.
   double typical_magnitude;
 
-  Impl(RhsFunction f, double atol, double rtol)
-      : rhs(std::move(f)), controlled(atol, rtol), typical_magnitude(atol / rtol) {}
+  Impl(RhsFunction f, JacobianFunction j, double atol, double rtol)
+      : rhs(std::move(f)),
+        exact_jacobian(std::move(j)),
+        controlled(atol, rtol),
+        typical_magnitude(atol / rtol) {}
 
   void eval(const UVec& xa, UVec& dxa) {
     a.resize(n);
@@ -41,10 +45,30 @@ struct Rosenbrock4Engine::Impl {
     dxa[n] = 1.0;
   }
 
-  // The Jacobian by forward differences of the same right-hand side, so that no model has to
-  // supply one by hand; the step is ~sqrt(machine epsilon) relative to each component.
+  // The system's exact Jacobian in the augmented form: d(f, 1)/d(x, tau).
+  bool exact(const UVec& xa, UMat& J) {
+    if (!exact_jacobian) return false;
+    a.resize(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = xa[i];
+    dfdx.resize(n * n);
+    dfdt_exact.resize(n);
+    if (!exact_jacobian(a, xa[n], dfdx, dfdt_exact)) return false;
+    J.resize(n + 1, n + 1, false);
+    for (std::size_t i = 0; i <= n; ++i) {
+      for (std::size_t j = 0; j <= n; ++j) {
+        J(i, j) = i == n ? 0.0 : (j == n ? dfdt_exact[i] : dfdx[i * n + j]);
+      }
+    }
+    return true;
+  }
+
+  // Without an exact one, the Jacobian by forward differences of the same right-hand side;
+  // the step is ~sqrt(machine epsilon) relative to each component.
   void jacobian(const UVec& xa, UMat& J, UVec& dfdt) {
     const std::size_t m = n + 1;
+    dfdt.resize(m, false);
+    for (std::size_t i = 0; i < m; ++i) dfdt[i] = 0.0;  // autonomous by construction
+    if (exact(xa, J)) return;
     UVec base(m), probe(m), f_probe(m);
     eval(xa, base);
     probe = xa;
@@ -57,13 +81,12 @@ struct Rosenbrock4Engine::Impl {
       probe[j] = xj;
       for (std::size_t i = 0; i < m; ++i) J(i, j) = (f_probe[i] - base[i]) / h;
     }
-    dfdt.resize(m, false);
-    for (std::size_t i = 0; i < m; ++i) dfdt[i] = 0.0;  // autonomous by construction
   }
 };
 
-Rosenbrock4Engine::Rosenbrock4Engine(RhsFunction rhs, double atol, double rtol)
-    : impl_(std::make_unique<Impl>(std::move(rhs), atol, rtol)) {}
+Rosenbrock4Engine::Rosenbrock4Engine(RhsFunction rhs, JacobianFunction jacobian, double atol,
+                                     double rtol)
+    : impl_(std::make_unique<Impl>(std::move(rhs), std::move(jacobian), atol, rtol)) {}
 Rosenbrock4Engine::~Rosenbrock4Engine() = default;
 
 void Rosenbrock4Engine::initialize(const State& x, double t) {

@@ -12,10 +12,13 @@ namespace pneumachaos::detail {
 
 using State = std::vector<double>;
 using RhsFunction = std::function<void(const State& x, State& dxdt, double t)>;
+/// Exact df/dx (row-major, n x n) and df/dt; returns false when the system has none.
+using JacobianFunction = std::function<bool(const State& x, double t, State& dfdx, State& dfdt)>;
 
 class Rosenbrock4Engine {
  public:
-  Rosenbrock4Engine(RhsFunction rhs, double atol, double rtol);
+  /// jacobian may be empty: the engine then differentiates rhs numerically.
+  Rosenbrock4Engine(RhsFunction rhs, JacobianFunction jacobian, double atol, double rtol);
   ~Rosenbrock4Engine();
   Rosenbrock4Engine(const Rosenbrock4Engine&) = delete;
   Rosenbrock4Engine& operator=(const Rosenbrock4Engine&) = delete;

@@ -71,8 +71,13 @@ class Dopri5Stepper {
 template <typename Rhs>
 class Rosenbrock4Stepper {
  public:
+  /// Rhs also offers jacobian(x, t, dfdx, dfdt) -> bool (the system's exact Jacobian).
   Rosenbrock4Stepper(Rhs rhs, double atol, double rtol)
-      : engine_([rhs](const State& x, State& dxdt, double t) { rhs(x, dxdt, t); }, atol, rtol) {}
+      : engine_([rhs](const State& x, State& dxdt, double t) { rhs(x, dxdt, t); },
+                [rhs](const State& x, double t, State& dfdx, State& dfdt) {
+                  return rhs.jacobian(x, t, dfdx, dfdt);
+                },
+                atol, rtol) {}
   void initialize(const State& x, double t) { engine_.initialize(x, t); }
   bool try_step(double& dt) { return engine_.try_step(dt); }
   void calc_state(double t, State& out) { engine_.calc_state(t, out); }

@@ -97,71 +97,33 @@ Eigen::VectorXd reduced_derivative(const Plant& plant, const Equilibrium& eq,
 
 Eigen::MatrixXd jacobian(const Plant& plant, const Equilibrium& eq) {
   const ReducedLayout r = reduced_layout(plant);
-  const Scenario& s = plant.scenario();
   const StateLayout& L = plant.layout();
-  const std::vector<double>& x = eq.state;
-  const double k = s.polytropic_exponent;
-  const double RT = s.gas.R_J_per_kgK * s.temperature_K;
-  const double Pa = s.ambient_pressure_Pa;
-  const double A1 = plant.A1();
-  const double A2 = plant.A2();
-  const double V1 = s.cylinder.volume_head_m3(eq.position_m);
-  const double V2 = s.cylinder.volume_rod_m3(eq.position_m);
-  const double v = x[L.v];
-  const double P1 = x[L.P1];
-  const double P2 = x[L.P2];
-  const double mp = plant.piston_mass_kg();
-  const bool spring = r.deflection != ReducedLayout::kNone;
-  const double kc = s.load.coupling_stiffness_N_per_m;
-  const double cc = s.load.coupling_damping_Ns_per_m;
-
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(r.size, r.size);
-  const FrictionInput seal_in{v, P1 + P2 - 2.0 * Pa, x[L.x]};
-  const auto zs = L.seal_z_count == 0 ? std::span<const double>{}
-                                      : std::span<const double>(x).subspan(L.seal_z, 1);
-  const FrictionPartials fs = plant.seal_friction().partials(seal_in, +1, zs);
-
-  // Piston: m_p dv/dt = A1 (P1 - Pa) - A2 (P2 - Pa) - F_seal - [F_ext | kc d + cc (v - v_L)].
-  J(r.v, r.v) = (-fs.dF_dv - (spring ? cc : 0.0)) / mp;
-  J(r.v, r.P1) = (A1 - fs.dF_dp) / mp;
-  J(r.v, r.P2) = (-A2 - fs.dF_dp) / mp;
-  if (r.z != ReducedLayout::kNone) J(r.v, r.z) = -fs.dF_dz / mp;
-
-  // Chambers, eqs. (2) and (3) with the volumes frozen.
-  const Orifice::Partials w1 = plant.valve1().mass_flow_partials(s.supply_pressure_Pa(), P1);
-  const Orifice::Partials w2 = plant.valve2().mass_flow_partials(P2, Pa);
-  J(r.P1, r.v) = -k * P1 * A1 / V1;
-  J(r.P1, r.P1) = k * RT / V1 * w1.dW_dPb - k * A1 * v / V1;
-  J(r.P2, r.v) = k * P2 * A2 / V2;
-  J(r.P2, r.P2) = -k * RT / V2 * w2.dW_dPa + k * A2 * v / V2;
-
-  if (r.z != ReducedLayout::kNone) {
-    J(r.z, r.v) = fs.dzdot_dv;
-    J(r.z, r.P1) = J(r.z, r.P2) = fs.dzdot_dp;
-    J(r.z, r.z) = fs.dzdot_dz;
+  const auto n = static_cast<Eigen::Index>(L.size);
+  const std::vector<double> x = full_state_impl(plant, eq, r, reduced_state(plant, eq).value);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dfdx(n, n);
+  Eigen::VectorXd dfdt(n);
+  plant.jacobian(plant.sliding_mode(+1), x, 0.0, std::span<double>(dfdx.data(), dfdx.size()),
+                 std::span<double>(dfdt.data(), dfdt.size()));
+  // The reduced state is a linear function of the full one and back (full_state_impl and
+  // reduced_derivative), so the chain rule is exact: J = D dfdx E.
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, r.size);  // d full state / d reduced state
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(r.size, n);  // d reduced rate / d full rate
+  const auto both = [&](int reduced, std::size_t full) {
+    E(static_cast<Eigen::Index>(full), reduced) = 1.0;
+    D(reduced, static_cast<Eigen::Index>(full)) = 1.0;
+  };
+  both(r.v, L.v);
+  both(r.P1, L.P1);
+  both(r.P2, L.P2);
+  if (r.z != ReducedLayout::kNone) both(r.z, L.seal_z);
+  if (r.deflection != ReducedLayout::kNone) {
+    E(static_cast<Eigen::Index>(L.load_x), r.deflection) = -1.0;  // x_load = x - deflection
+    D(r.deflection, static_cast<Eigen::Index>(L.x)) = 1.0;
+    D(r.deflection, static_cast<Eigen::Index>(L.load_x)) = -1.0;
+    both(r.v_load, L.load_v);
   }
-  if (spring) {
-    const double mL = s.load.mass_kg;
-    const double vL = x[L.load_v];
-    const FrictionInput guide_in{vL, 0.0, x[L.load_x]};
-    const auto zg = L.guide_z_count == 0 ? std::span<const double>{}
-                                         : std::span<const double>(x).subspan(L.guide_z, 1);
-    const FrictionPartials fg = plant.guide_friction()->partials(guide_in, +1, zg);
-    J(r.v, r.deflection) = -kc / mp;
-    J(r.v, r.v_load) = cc / mp;
-    J(r.deflection, r.v) = 1.0;
-    J(r.deflection, r.v_load) = -1.0;
-    // Load: m_L dv_L/dt = kc d + cc (v - v_L) - F_ext - F_guide.
-    J(r.v_load, r.deflection) = kc / mL;
-    J(r.v_load, r.v) = cc / mL;
-    J(r.v_load, r.v_load) = (-cc - fg.dF_dv) / mL;
-    if (r.z_guide != ReducedLayout::kNone) {
-      J(r.v_load, r.z_guide) = -fg.dF_dz / mL;
-      J(r.z_guide, r.v_load) = fg.dzdot_dv;
-      J(r.z_guide, r.z_guide) = fg.dzdot_dz;
-    }
-  }
-  return J;
+  if (r.z_guide != ReducedLayout::kNone) both(r.z_guide, L.guide_z);
+  return D * dfdx * E;
 }
 
 }  // namespace pneumachaos

@@ -21,14 +21,15 @@ const char* verdict_name(StabilityVerdict v) {
   return "?";
 }
 
-PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) {
-  const Scenario& s = plant.scenario();
-  const double k = s.polytropic_exponent;
-  const double RT = s.gas.R_J_per_kgK * s.temperature_K;
+PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq,
+                                     CircuitKind circuit) {
+  const double k = plant.polytropic_exponent();
+  const double RT = plant.RT_J_per_kg();
+  const LoadParams& load = plant.load();
   const double m =
-      s.load.mass_kg + (s.load.coupling == LoadCoupling::kSpring ? s.load.piston_mass_kg : 0.0);
-  const double V10 = s.cylinder.volume_head_m3(eq.position_m);
-  const double V20 = s.cylinder.volume_rod_m3(eq.position_m);
+      load.mass_kg + (load.coupling == LoadCoupling::kSpring ? load.piston_mass_kg : 0.0);
+  const double V10 = plant.geometry().volume_head_m3(eq.position_m);
+  const double V20 = plant.geometry().volume_rod_m3(eq.position_m);
   const double B = eq.slope_Ns_per_m;
   const double v0 = eq.v0_m_per_s;
   PaperCoefficients c;
@@ -42,9 +43,9 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) 
   c.a2 = k * plant.A2() * plant.A2() * eq.P20_Pa / V20 - c.a * B;
   // Meter-in, P2 atmospheric, supply choked (eqs. 10 and 11).
   c.b = k * plant.A1() * v0 / V10;
-  c.b1 = k * m * RT * c.Cd1_kg_per_sPa / (V10 * eq.P10_Pa) * s.supply_pressure_Pa() + B;
+  c.b1 = k * m * RT * c.Cd1_kg_per_sPa / (V10 * eq.P10_Pa) * plant.supply_pressure_Pa() + B;
   c.b2 = k * plant.A1() * plant.A1() * eq.P10_Pa / V10 + c.b * B;
-  const bool meter_out = s.circuit.kind == CircuitKind::kMeterOut;
+  const bool meter_out = circuit == CircuitKind::kMeterOut;
   const double c1 = meter_out ? c.a1 : c.b1;
   const double c2 = meter_out ? c.a2 : c.b2;
   c.zeta = c2 > 0.0 ? c1 / (2.0 * std::sqrt(m * c2)) : std::numeric_limits<double>::quiet_NaN();
@@ -60,7 +61,7 @@ StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& op
     return r;
   }
   r.equilibrium = eqs.primary();
-  r.paper = paper_coefficients(plant, r.equilibrium);
+  r.paper = paper_coefficients(plant, r.equilibrium, options.circuit);
   const Eigen::MatrixXd J = jacobian(plant, r.equilibrium);
   r.state_names = reduced_state(plant, r.equilibrium).names;
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(J, /*computeEigenvectors=*/false);

@@ -1,5 +1,8 @@
 #include "pneumachaos/stability/stability_map.hpp"
 
+#include <exception>
+#include <string>
+
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -17,10 +20,16 @@ StabilityMap stability_map(const Scenario& base, const std::vector<GridAxis>& ax
     for (std::size_t i = 0; i < axes.size(); ++i)
       point.coordinates.push_back(axes[i].values[index[i]]);
     try {
-      const Plant plant(scenario_at(base, axes, index));
-      point.result = analyze_stability(plant, options);
+      const Scenario scenario = scenario_at(base, axes, index);
+      StabilityOptions at_point = options;
+      at_point.circuit = scenario.circuit.kind;
+      point.result = analyze_stability(Plant(scenario), at_point);
     } catch (const Error& e) {
       point.error = e.what();
+    } catch (const std::exception& e) {
+      // A numerical breakdown at one point (Boost.Math, Eigen) marks that point; the map
+      // goes on (issue 16: one bad point used to abort the whole map).
+      point.error = std::string("numerical failure: ") + e.what();
     }
     if (point.result.has_equilibrium()) {
       ++map.with_equilibrium;

@@ -61,6 +61,14 @@ class HybridSystem {
 
   /// The mode consistent with an initial state.
   [[nodiscard]] virtual Mode initial_mode(std::span<const double> x, double t) const = 0;
+
+  /// Exact partial derivatives of derivative() in `mode`: dfdx row-major (dfdx[i n + j] =
+  /// d f_i / d x_j, n = state_size()) and dfdt[i] = d f_i / d t. Returns false when the system
+  /// has none; the stiff stepper then differentiates numerically.
+  virtual bool jacobian(const Mode& /*mode*/, std::span<const double> /*x*/, double /*t*/,
+                        std::span<double> /*dfdx*/, std::span<double> /*dfdt*/) const {
+    return false;
+  }
 };
 
 }  // namespace pneumachaos

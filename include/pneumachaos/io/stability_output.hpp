@@ -9,8 +9,10 @@
 
 namespace pneumachaos {
 
-std::string stability_table(const Plant& plant, const StabilityResult& result);
-std::string stability_json(const Plant& plant, const StabilityResult& result);
+/// `scenario` is the one the result was computed for (its circuit, valves, supply and mass
+/// head the output).
+std::string stability_table(const Scenario& scenario, const StabilityResult& result);
+std::string stability_json(const Scenario& scenario, const StabilityResult& result);
 
 /// Columns: one per axis key, then v0_mm_per_s, P10_MPa_gauge, P20_MPa_gauge,
 /// B_Ns_per_m, a1_Ns_per_m, b1_Ns_per_m, zeta_paper, verdict_paper, max_real_part_per_s,

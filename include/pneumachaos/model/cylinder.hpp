@@ -17,12 +17,19 @@ struct CylinderGeometry {
 
   [[nodiscard]] double area_head_m2() const;  ///< A1, full bore
   [[nodiscard]] double area_rod_m2() const;   ///< A2, annulus
-  [[nodiscard]] double volume_head_m3(double x_m) const {
-    return dead_volume_head_m3 + area_head_m2() * (volumes_frozen() ? frozen_position_m : x_m);
+  /// V1 and V2 at piston position x (any scalar type: double, or an automatic-differentiation
+  /// scalar when the plant's Jacobian is taken).
+  template <typename T>
+  [[nodiscard]] T volume_head_m3(const T& x_m) const {
+    if (volumes_frozen()) return T(dead_volume_head_m3 + area_head_m2() * frozen_position_m);
+    return dead_volume_head_m3 + area_head_m2() * x_m;
   }
-  [[nodiscard]] double volume_rod_m3(double x_m) const {
-    return dead_volume_rod_m3 +
-           area_rod_m2() * (stroke_m - (volumes_frozen() ? frozen_position_m : x_m));
+  template <typename T>
+  [[nodiscard]] T volume_rod_m3(const T& x_m) const {
+    if (volumes_frozen()) {
+      return T(dead_volume_rod_m3 + area_rod_m2() * (stroke_m - frozen_position_m));
+    }
+    return dead_volume_rod_m3 + area_rod_m2() * (stroke_m - x_m);
   }
 };
 

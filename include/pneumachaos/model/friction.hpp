@@ -36,19 +36,15 @@ struct FrictionParams {
   std::vector<TextureMode> texture;
 };
 
-/// What a friction model sees of the plant.
-struct FrictionInput {
-  double v_m_per_s = 0.0;     ///< sliding velocity of the contact
-  double gauge_sum_Pa = 0.0;  ///< P1 + P2 - 2 Pa (0 for a contact not on the seal)
-  double position_m = 0.0;    ///< position along the contact (for textures)
+/// What a friction model sees of the plant, in the scalar type of the evaluation (double,
+/// or an automatic-differentiation scalar when the plant's Jacobian is taken).
+template <typename T>
+struct BasicFrictionInput {
+  T v_m_per_s = T(0.0);     ///< sliding velocity of the contact
+  T gauge_sum_Pa = T(0.0);  ///< P1 + P2 - 2 Pa (0 for a contact not on the seal)
+  T position_m = T(0.0);    ///< position along the contact (for textures)
 };
-
-/// First derivatives of a friction model while sliding, for the linearization. p is the
-/// gauge pressure sum P1 + P2 - 2 Pa; z the (at most one) internal state.
-struct FrictionPartials {
-  double dF_dv = 0.0, dF_dp = 0.0, dF_dz = 0.0;
-  double dzdot_dv = 0.0, dzdot_dp = 0.0, dzdot_dz = 0.0;
-};
+using FrictionInput = BasicFrictionInput<double>;
 
 class FrictionModel {
  public:
@@ -77,31 +73,12 @@ class FrictionModel {
   /// Slope dF/dv of the steady curve at v (the paper's B, negative on a Stribeck drop).
   [[nodiscard]] double steady_slope_Ns_per_m(const FrictionInput& in) const;
 
-  /// Analytic partial derivatives while sliding (direction as in force_N).
-  [[nodiscard]] virtual FrictionPartials partials(const FrictionInput& in, int direction,
-                                                  std::span<const double> z) const = 0;
-
   /// Steady internal state at constant velocity (zero for models without state).
   virtual void steady_state(const FrictionInput& in, std::span<double> z) const;
 
   [[nodiscard]] const FrictionParams& params() const { return p_; }
 
  protected:
-  [[nodiscard]] double coulomb_N(const FrictionInput& in) const {
-    return (p_.coulomb_N + p_.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(in);
-  }
-  [[nodiscard]] double static_N(const FrictionInput& in) const {
-    return (p_.static_N + p_.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(in);
-  }
-  [[nodiscard]] double texture_factor(const FrictionInput& in) const;
-  /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
-  [[nodiscard]] double stribeck_level_N(const FrictionInput& in, double speed) const;
-  /// dg/d|v| and dg/dp of the Stribeck curve at |v| = speed.
-  [[nodiscard]] double stribeck_dspeed(const FrictionInput& in, double speed) const;
-  [[nodiscard]] double stribeck_dp(double speed) const;
-  /// exp(-(speed/vs)^delta), the Stribeck drop's weight.
-  [[nodiscard]] double stribeck_weight(double speed) const;
-
   FrictionParams p_;
 };
 

@@ -48,6 +48,10 @@ class Plant final : public HybridSystem {
   EventOutcome apply_event(std::size_t which, Mode& mode, std::span<double> x,
                            double t) const override;
   [[nodiscard]] Mode initial_mode(std::span<const double> x, double t) const override;
+  /// The exact Jacobian of derivative() in `mode`, by automatic differentiation of the same
+  /// templated equations (Eigen's AutoDiff); the plant is autonomous, so dfdt = 0.
+  bool jacobian(const Mode& mode, std::span<const double> x, double t, std::span<double> dfdx,
+                std::span<double> dfdt) const override;
 
   /// MODEL.md start of a run: chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
   [[nodiscard]] std::vector<double> initial_state() const;
@@ -57,8 +61,16 @@ class Plant final : public HybridSystem {
   /// for norms that weigh positions, speeds and pressures alike (model Lyapunov exponent).
   [[nodiscard]] std::vector<double> state_scales() const;
 
+  // What the plant integrates, and nothing else of the Scenario it was built from (the run's
+  // settings, the circuit's name and the variation stay with the caller).
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
-  [[nodiscard]] const Scenario& scenario() const { return scenario_; }
+  [[nodiscard]] double ambient_pressure_Pa() const { return ambient_Pa_; }
+  [[nodiscard]] double supply_pressure_Pa() const { return supply_Pa_; }  ///< absolute
+  [[nodiscard]] double polytropic_exponent() const { return polytropic_exponent_; }
+  /// R T of the air [J/kg]: chambers and supply share one temperature (no energy equation).
+  [[nodiscard]] double RT_J_per_kg() const { return RT_; }
+  [[nodiscard]] const CylinderGeometry& geometry() const { return geometry_; }
+  [[nodiscard]] const LoadParams& load() const { return load_; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
   /// The load guide's friction model; nullptr for rigid coupling.
   [[nodiscard]] const FrictionModel* guide_friction() const { return guide_.get(); }
@@ -70,6 +82,11 @@ class Plant final : public HybridSystem {
   [[nodiscard]] double A2() const { return A2_; }
   /// Mass whose motion carries the seal friction: total mass (rigid) or piston + rod (spring).
   [[nodiscard]] double piston_mass_kg() const { return piston_mass_; }
+
+  /// dP1/dt (eq. 2) and dP2/dt (eq. 3) alone: the parts of derivative() that no mode changes,
+  /// for balances that need only one chamber.
+  [[nodiscard]] double head_pressure_rate(std::span<const double> x) const;
+  [[nodiscard]] double rod_pressure_rate(std::span<const double> x) const;
 
   /// Mass flows W1 (into chamber 1) and W2 (out of chamber 2) at these pressures.
   [[nodiscard]] std::array<double, 2> mass_flows(double P1_Pa, double P2_Pa) const;
@@ -92,16 +109,35 @@ class Plant final : public HybridSystem {
   };
 
   [[nodiscard]] EventList active_events(const Mode& mode) const;
-  [[nodiscard]] double drive_force(std::size_t contact, std::span<const double> x) const;
-  [[nodiscard]] FrictionInput friction_input(std::size_t contact, std::span<const double> x) const;
+
+  // The model's equations, written once on a scalar type T (double, or an automatic-
+  // differentiation scalar for the Jacobian); defined in src/model/plant_equations.hpp.
+  template <typename T>
+  void evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const;
+  template <typename T>
+  [[nodiscard]] T head_chamber_rate(std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T rod_chamber_rate(std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T drive_force(std::size_t contact, std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] BasicFrictionInput<T> friction_input(std::size_t contact,
+                                                     std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T friction_force(std::size_t contact, ContactMode m, std::span<const T> x,
+                                 std::span<T> dz) const;
+
   [[nodiscard]] double holding_force(std::size_t contact, std::span<const double> x) const;
-  [[nodiscard]] double friction_force(std::size_t contact, ContactMode m, std::span<const double> x,
-                                      std::span<double> dz) const;
   /// The mode of a contact at rest (v = 0) consistent with its forces.
   [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
                                       bool at_stop) const;
 
-  Scenario scenario_;
+  CylinderGeometry geometry_;
+  LoadParams load_;
+  double ambient_Pa_ = 0.0;
+  double supply_Pa_ = 0.0;
+  double polytropic_exponent_ = 0.0;
+  double RT_ = 0.0;
   StateLayout layout_;
   std::unique_ptr<FrictionModel> seal_;
   std::unique_ptr<FrictionModel> guide_;

@@ -2,6 +2,8 @@
 // Mass flow of air through a restriction sized by its effective sectional area S
 // (JIS B 8390), MODEL.md "Valve flow through an effective sectional area S".
 
+#include <cmath>
+
 namespace pneumachaos {
 
 enum class FlowLaw {
@@ -34,28 +36,27 @@ double valve_mass_flow(const ValveLaw& valve, const GasConstants& gas, double S_
                        double T_a_K, double P_b_Pa, double T_b_K);
 
 /// A restriction of fixed area, law and upstream temperatures, with the law's constants
-/// computed once (the flow law runs in the innermost loop of every simulation).
+/// computed once (the flow law runs in the innermost loop of every simulation). The law is
+/// written once on a scalar type T (double, or an automatic-differentiation scalar when the
+/// plant's Jacobian is taken).
 class Orifice {
  public:
   Orifice(const ValveLaw& valve, const GasConstants& gas, double S_m2, double T_K);
   /// Mass flow [kg/s] from pressure P_a to P_b; negative for reverse flow.
-  [[nodiscard]] double mass_flow(double P_a_Pa, double P_b_Pa) const;
+  [[nodiscard]] double mass_flow(double P_a_Pa, double P_b_Pa) const {
+    return mass_flow<double>(P_a_Pa, P_b_Pa);
+  }
+  template <typename T>
+  [[nodiscard]] T mass_flow(const T& P_a_Pa, const T& P_b_Pa) const;
   /// psi(r) for 0 <= r <= 1, laminar branch included.
-  [[nodiscard]] double psi(double r) const;
-  /// d psi / d r, analytic (used by the linearization).
-  [[nodiscard]] double dpsi_dr(double r) const;
-
-  struct Partials {
-    double W = 0.0;       ///< mass flow from a to b [kg/s]
-    double dW_dPa = 0.0;  ///< [kg/(s*Pa)]
-    double dW_dPb = 0.0;
-  };
-  [[nodiscard]] Partials mass_flow_partials(double P_a_Pa, double P_b_Pa) const;
+  template <typename T = double>
+  [[nodiscard]] T psi(T r) const;
   /// S * choked flux factor: the paper's Cd [kg/(s*Pa)], W_choked = Cd * P_up.
   [[nodiscard]] double choked_coefficient() const { return coefficient_; }
 
  private:
-  [[nodiscard]] double raw_psi(double r) const;
+  template <typename T>
+  [[nodiscard]] T raw_psi(const T& r) const;
   ValveLaw valve_;
   double k_;
   double coefficient_;  // S * choked_flux_factor
@@ -63,6 +64,44 @@ class Orifice {
   double inv_flux_crit_ = 1.0;
   double psi_lam_ = 0.0;
 };
+
+template <typename T>
+T Orifice::raw_psi(const T& r) const {
+  using std::pow;
+  using std::sqrt;
+  if (r <= r_crit_) return T(1.0);
+  T radicand;
+  if (valve_.law == FlowLaw::kIso6358) {
+    const T q = (r - r_crit_) / (1.0 - r_crit_);
+    radicand = 1.0 - q * q;
+  } else {
+    radicand = pow(r, 2.0 / k_) - pow(r, (k_ + 1.0) / k_);
+  }
+  if (!(0.0 < radicand)) radicand = T(0.0);
+  const T root = sqrt(radicand);
+  return valve_.law == FlowLaw::kIso6358 ? root : T(root * inv_flux_crit_);
+}
+
+template <typename T>
+T Orifice::psi(T r) const {
+  if (r < 0.0) {
+    r = T(0.0);
+  } else if (1.0 < r) {
+    r = T(1.0);
+  }
+  const double r_lam = valve_.laminar_ratio;
+  if (r <= r_lam) return raw_psi(r);
+  // Linear in (1 - r) = (P_up - P_down)/P_up, equal to the law at r_lam: the ellipse's
+  // infinite slope at r = 1 would otherwise stall the integrator.
+  return psi_lam_ * (1.0 - r) / (1.0 - r_lam);
+}
+
+template <typename T>
+T Orifice::mass_flow(const T& P_a_Pa, const T& P_b_Pa) const {
+  if (coefficient_ <= 0.0 || P_a_Pa == P_b_Pa) return T(0.0);
+  if (P_a_Pa > P_b_Pa) return coefficient_ * P_a_Pa * psi<T>(P_b_Pa / P_a_Pa);
+  return -coefficient_ * P_b_Pa * psi<T>(P_a_Pa / P_b_Pa);
+}
 
 /// Dimensionless flow function psi(r) of the law in forward direction (P_up >= P_down),
 /// with the laminar branch applied: W = S * P_up * choked_flux_factor * psi(r).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pneumachaos/core/hybrid_system.hpp"
+#include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/simulate/event_integrator.hpp"
 
 namespace pneumachaos {
@@ -52,8 +53,9 @@ class Plant;
 /// The cylinder's exponent from the start of a run: the plant's state scales, the separation
 /// along P1 (which leaves a stuck contact stuck), rtol 1e-9 and atol 1e-12 times
 /// tolerance_factor (the separation, 1 Pa by default, stays ~3 decades above the integration
-/// error and below the motion); transient, measuring time and intervals from `base`.
-ModelLyapunovResult plant_lyapunov(const Plant& plant, ModelLyapunovOptions base = {},
-                                   double tolerance_factor = 1.0);
+/// error and below the motion); the largest step and the stepper from the scenario's `run`;
+/// transient, measuring time and intervals from `base`.
+ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run,
+                                   ModelLyapunovOptions base = {}, double tolerance_factor = 1.0);
 
 }  // namespace pneumachaos

@@ -28,8 +28,8 @@ std::vector<double> full_state(const Plant& plant, const Equilibrium& eq, const 
 Eigen::VectorXd reduced_derivative(const Plant& plant, const Equilibrium& eq,
                                    const Eigen::VectorXd& y);
 
-/// The Jacobian of reduced_derivative, from analytic partial derivatives of the valve laws
-/// and friction models (checked against finite differences in the tests).
+/// The Jacobian of reduced_derivative, from the plant's exact Jacobian (automatic
+/// differentiation of its equations; checked against finite differences in the tests).
 Eigen::MatrixXd jacobian(const Plant& plant, const Equilibrium& eq);
 
 }  // namespace pneumachaos

@@ -1,0 +1,102 @@
+#pragma once
+// The friction laws, written once on a scalar type T: double when the plant is integrated, an
+// automatic-differentiation scalar when its Jacobian is taken (docs/architecture.md). The
+// FrictionModel classes and the Plant's right-hand side both call these; private to the
+// model module.
+//
+// The double instantiation must keep the arithmetic of the hand-written laws it replaced,
+// operation for operation, so that simulations stay bit-identical.
+
+#include <cmath>
+
+#include "pneumachaos/model/friction.hpp"
+
+namespace pneumachaos::friction_law {
+
+/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/architecture.md).
+template <typename T>
+T texture_factor(const FrictionParams& p, const T& position_m) {
+  using std::sin;
+  T f(1.0);
+  for (const TextureMode& m : p.texture)
+    f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);
+  return f;
+}
+
+/// Fc with its pressure dependence and texture (docs/architecture.md).
+template <typename T>
+T coulomb_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
+  return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *
+         texture_factor(p, in.position_m);
+}
+
+/// Fs, likewise.
+template <typename T>
+T static_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
+  return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(p, in.position_m);
+}
+
+/// exp(-(|speed|/vs)^delta), the Stribeck drop's weight.
+template <typename T>
+T stribeck_weight(const FrictionParams& p, const T& speed) {
+  using std::abs;
+  using std::exp;
+  using std::pow;
+  using std::sqrt;
+  const T u = abs(speed) / p.stribeck_velocity_m_per_s;
+  const double delta = p.stribeck_exponent;
+  // The common exponents avoid pow(), which dominated the derivative's cost.
+  T w;
+  if (delta == 2.0) {
+    w = u * u;
+  } else if (delta == 1.0) {
+    w = u;
+  } else if (delta == 0.5) {
+    w = sqrt(u);
+  } else {
+    w = pow(u, delta);
+  }
+  return exp(-w);
+}
+
+/// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
+template <typename T>
+T stribeck_level_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& speed) {
+  const T fc = coulomb_N(p, in);
+  return fc + (static_N(p, in) - fc) * stribeck_weight(p, speed);
+}
+
+/// Sliding force of the stiction models in `direction` (+1/-1): `classic`, paper eq. (4),
+/// Fc sgn v + B v; `stribeck`, [Fc + (Fs - Fc) exp(-(|v|/vs)^delta)] sgn v + B v.
+template <typename T>
+T stiction_sliding_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction) {
+  // The mode fixes the sign, so the force is smooth within a sliding segment.
+  const double d = direction;
+  T speed = d * in.v_m_per_s;
+  if (speed < 0.0) speed = T(0.0);
+  const T level =
+      p.kind == FrictionKind::kClassic ? coulomb_N(p, in) : stribeck_level_N(p, in, speed);
+  return d * (level + p.viscous_Ns_per_m * speed);
+}
+
+/// LuGre (Canudas de Wit et al. 1995): dz/dt = v - sigma0 |v| z / g(v),
+/// F = sigma0 z + sigma1 dz/dt + sigma2 v. Writes dz/dt to dz.
+template <typename T>
+T lugre_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& z, T& dz) {
+  using std::abs;
+  const T& v = in.v_m_per_s;
+  const T g = stribeck_level_N(p, in, v);
+  dz = v - p.sigma0_N_per_m * abs(v) * z / g;
+  return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
+}
+
+/// The force of whichever model `p.kind` names, while the contact moves; z and dz point to
+/// the model's internal states (none for the stiction models).
+template <typename T>
+T moving_force_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction,
+                 const T* z, T* dz) {
+  if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0]);
+  return stiction_sliding_N(p, in, direction);
+}
+
+}  // namespace pneumachaos::friction_law

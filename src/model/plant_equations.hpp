@@ -1,0 +1,113 @@
+#pragma once
+// The Plant's equations, written once on a scalar type T: eqs. (1)-(3) of
+// docs/architecture.md, the friction internal states and the optional second body.
+// derivative() instantiates them on double, jacobian() on an automatic-differentiation scalar,
+// and the equilibrium search solves their residual. Private to the model module.
+//
+// The double instantiation keeps the arithmetic of the hand-written derivative it replaced,
+// operation for operation, so that simulations stay bit-identical.
+
+#include "friction_laws.hpp"
+#include "pneumachaos/model/plant.hpp"
+
+namespace pneumachaos {
+namespace plant_detail {
+
+inline constexpr std::size_t kSeal = 0;
+inline constexpr std::size_t kGuide = 1;
+
+inline ContactMode mode_of(const Mode& m, std::size_t contact) {
+  return static_cast<ContactMode>(m.value[contact]);
+}
+inline bool moving(ContactMode m) { return m != ContactMode::kStuck && m != ContactMode::kAtStop; }
+inline int direction_of(ContactMode m) {
+  return m == ContactMode::kSlidePos ? 1 : (m == ContactMode::kSlideNeg ? -1 : 0);
+}
+
+}  // namespace plant_detail
+
+template <typename T>
+T Plant::drive_force(std::size_t contact, std::span<const T> x) const {
+  const double Pa = ambient_Pa_;
+  const auto& L = layout_;
+  T coupling(0.0);
+  if (contacts_ == 2) {
+    coupling = load_.coupling_stiffness_N_per_m * (x[L.x] - x[L.load_x]) +
+               load_.coupling_damping_Ns_per_m * (x[L.v] - x[L.load_v]);
+  }
+  if (contact == plant_detail::kGuide) return coupling - load_.external_force_N;
+  const T pneumatic = A1_ * (x[L.P1] - Pa) - A2_ * (x[L.P2] - Pa);
+  if (contacts_ == 2) return pneumatic - coupling;
+  return pneumatic - load_.external_force_N;
+}
+
+template <typename T>
+BasicFrictionInput<T> Plant::friction_input(std::size_t contact, std::span<const T> x) const {
+  const auto& L = layout_;
+  if (contact == plant_detail::kGuide) return {x[L.load_v], T(0.0), x[L.load_x]};
+  return {x[L.v], x[L.P1] + x[L.P2] - 2.0 * ambient_Pa_, x[L.x]};
+}
+
+template <typename T>
+T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x,
+                        std::span<T> dz) const {
+  using plant_detail::kSeal;
+  const auto& L = layout_;
+  const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
+  const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
+  const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
+  if (!plant_detail::moving(m)) {
+    for (T& d : dz) d = T(0.0);  // bristles neither deflect nor relax at rest
+    return T(0.0);
+  }
+  const T* z = nz == 0 ? nullptr : x.data() + z0;
+  return friction_law::moving_force_N(f.params(), friction_input(contact, x),
+                                      plant_detail::direction_of(m), z, dz.data());
+}
+
+template <typename T>
+T Plant::head_chamber_rate(std::span<const T> x) const {
+  const auto& L = layout_;
+  const double k = polytropic_exponent_;
+  const T V1 = geometry_.volume_head_m3(x[L.x]);
+  const T W1 = valve1_->mass_flow(T(supply_Pa_), x[L.P1]);
+  return k * RT_ / V1 * W1 - k * x[L.P1] * A1_ / V1 * x[L.v];  // eq. (2)
+}
+
+template <typename T>
+T Plant::rod_chamber_rate(std::span<const T> x) const {
+  const auto& L = layout_;
+  const double k = polytropic_exponent_;
+  const T V2 = geometry_.volume_rod_m3(x[L.x]);
+  const T W2 = valve2_->mass_flow(x[L.P2], T(ambient_Pa_));
+  return -k * RT_ / V2 * W2 + k * x[L.P2] * A2_ / V2 * x[L.v];  // eq. (3)
+}
+
+template <typename T>
+void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const {
+  using namespace plant_detail;
+  const auto& L = layout_;
+  dxdt[L.P1] = head_chamber_rate(x);
+  dxdt[L.P2] = rod_chamber_rate(x);
+
+  const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
+                        std::size_t nz, double mass) {
+    const ContactMode m = mode_of(mode, contact);
+    std::span<T> dz = nz == 0 ? std::span<T>{} : dxdt.subspan(iz, nz);
+    const T friction = friction_force(contact, m, x, dz);
+    if (moving(m)) {
+      dxdt[ix] = x[iv];
+      dxdt[iv] = (drive_force(contact, x) - friction) / mass;  // eq. (1)
+    } else {
+      // Stuck or at the stop: v held at exactly 0 and x frozen (docs/architecture.md).
+      dxdt[ix] = T(0.0);
+      dxdt[iv] = T(0.0);
+    }
+  };
+  body(kSeal, L.x, L.v, L.seal_z, L.seal_z_count, piston_mass_);
+  if (contacts_ == 2) {
+    body(kGuide, L.load_x, L.load_v, L.guide_z, L.guide_z_count, load_.mass_kg);
+  }
+}
+
+}  // namespace pneumachaos
