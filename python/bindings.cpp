@@ -208,8 +208,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("analyze", &analyze_py);
   m.def("stability_json", [](const Scenario& s) {
     py::gil_scoped_release release;
-    const Plant plant(s);
-    return stability_json(plant, analyze_stability(plant, {}));
+    return stability_json(s, analyze_stability(Plant(s), {}));
   });
   m.def("stability_map_csv", &stability_map_csv);
   m.def("model_lyapunov_json", [](const Scenario& s, double transient_s, double measure_s,
@@ -221,7 +220,7 @@ PYBIND11_MODULE(_core, m) {
     ModelLyapunovResult r;
     {
       py::gil_scoped_release release;
-      r = plant_lyapunov(Plant(s), o);
+      r = plant_lyapunov(Plant(s), s.run, o);
     }
     if (!r.ok) throw RunError("model_lyapunov", r.message);
     return lyapunov_json(r, o);
