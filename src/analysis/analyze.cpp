@@ -148,7 +148,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   const std::size_t zero_lag =
       r.acf.first_zero_s > 0 ? static_cast<std::size_t>(std::lround(r.acf.first_zero_s * rate_Hz))
                              : 1;
-  r.theiler = o.theiler > 0 ? o.theiler : std::max(tau, zero_lag);
+  r.theiler = o.theiler > 0 || o.theiler_given ? o.theiler : std::max(tau, zero_lag);
   r.dimension =
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
 

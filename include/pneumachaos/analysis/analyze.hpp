@@ -25,7 +25,8 @@ struct AnalysisOptions {
   SpectrumOptions spectrum;
   std::size_t delay = 0;      ///< 0: automatic (mutual information)
   std::size_t dimension = 0;  ///< 0: automatic (Cao)
-  std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)
+  std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)...
+  bool theiler_given = false;  ///< ...unless set: then `theiler` as given, 0 included
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
   /// Seeds the 0-1 test's random frequencies and the surrogates (each result is a function of
   /// the record, the options and this seed alone).
