@@ -43,6 +43,12 @@ void DftPlan::forward(std::span<const double> x, std::vector<std::complex<double
   impl_->forward.transform(buffer_.data(), X.data());
 }
 
+void DftPlan::transform(const std::vector<std::complex<double>>& in,
+                        std::vector<std::complex<double>>& out, bool inverse) const {
+  out.resize(n_);
+  (inverse ? impl_->inverse : impl_->forward).transform(in.data(), out.data());
+}
+
 void DftPlan::inverse_real(const std::vector<std::complex<double>>& X,
                            std::vector<double>& x) const {
   impl_->inverse.transform(X.data(), buffer_.data());

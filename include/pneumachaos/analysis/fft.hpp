@@ -31,6 +31,9 @@ class DftPlan {
   void forward(std::span<const double> x, std::vector<std::complex<double>>& X) const;
   /// x = real part of the inverse DFT of X, without the 1/n factor.
   void inverse_real(const std::vector<std::complex<double>>& X, std::vector<double>& x) const;
+  /// Complex input: out = forward (or inverse, without 1/n) DFT of in; both of size().
+  void transform(const std::vector<std::complex<double>>& in, std::vector<std::complex<double>>& out,
+                 bool inverse) const;
 
  private:
   struct Impl;

@@ -16,7 +16,7 @@ struct PredictionOptions {
   std::size_t theiler = 1;
   std::size_t horizon = 0;         ///< steps ahead; 0: the delay
   std::size_t neighbours = 4;      ///< averaged by the local-constant predictor
-  std::size_t max_references = 1000;  ///< predicted points, spread over the record
+  std::size_t max_references = 500;  ///< predicted points, spread over the record
 };
 
 struct PredictionErrors {
