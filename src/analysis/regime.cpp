@@ -13,8 +13,7 @@ struct Criteria {
   bool steady = false, positive = false, deterministic = false;
   bool diffusive = false, regular_K = false;  ///< 0-1 test median (both false when not run)
   bool clearly_regular = false;               ///< 0-1 test: even the upper quartile is low
-  bool surrogate_nonlinear = false;           ///< run and the record more predictable
-  bool surrogate_linear = false;              ///< run and the null not rejected
+  bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
   bool persistent = false, concentrated = false, second_line = false;
 };
 
@@ -55,31 +54,37 @@ void note_zero_one(const RegimeEvidence& e, const VerdictOptions& o, Notes& note
   c.clearly_regular = e.zero_one_q75 < o.zero_one_split;
 }
 
+// Determinism: with the surrogate test run, "more predictable than every IAAFT surrogate"
+// (a calibrated test against linear noise); without it, the prediction-error ratio alone.
 void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
                       Criteria& c) {
-  if (!e.prediction_computed) {
-    note.info("determinism: the record is too short for the prediction test");
-  } else {
-    c.deterministic = note(
-        e.prediction_nonlinear <= o.max_prediction_ratio * e.prediction_linear,
-        fmt::format("deterministic: local-constant prediction error {:.3g} <= {} x linear "
-                    "prediction error {:.3g} (ratio {:.3g})",
-                    e.prediction_nonlinear, o.max_prediction_ratio, e.prediction_linear,
-                    e.prediction_linear > 0 ? e.prediction_nonlinear / e.prediction_linear : 1.0));
-  }
+  const double ratio =
+      e.prediction_linear > 0 ? e.prediction_nonlinear / e.prediction_linear : 1.0;
+  const std::string line = fmt::format(
+      "local-constant prediction error {:.3g}, linear {:.3g} (ratio {:.3g}; deterministic "
+      "below {})",
+      e.prediction_nonlinear, e.prediction_linear, ratio, o.max_prediction_ratio);
+  const bool by_ratio = e.prediction_computed && ratio <= o.max_prediction_ratio;
   note.info(fmt::format("Cao's max |E2 - 1| = {:.3f} (reported; ~0 for white noise)",
                         e.determinism));
   if (!e.surrogate_run) {
     note.info("surrogate test: " + e.surrogate_note);
+    if (!e.prediction_computed) {
+      note.info("determinism: the record is too short for the prediction test");
+      return;
+    }
+    c.deterministic = note(by_ratio, "deterministic: " + line);
+    c.noise_like = !c.deterministic;
     return;
   }
-  c.surrogate_nonlinear = e.surrogate_more_predictable;
-  c.surrogate_linear = !e.surrogate_rejected;
-  note(e.surrogate_more_predictable,
-       fmt::format("surrogates: the record's prediction error is below all {} IAAFT surrogates "
-                   "(rank {}, p = {:.3f}; linear-stochastic null {})",
-                   e.surrogate_count, e.surrogate_rank, e.surrogate_p,
-                   e.surrogate_rejected ? "rejected" : "kept"));
+  note.info(line);
+  c.deterministic = note(
+      e.surrogate_more_predictable,
+      fmt::format("deterministic: the record's prediction error is below all {} IAAFT surrogates "
+                  "(rank {}, p = {:.3f}; linear-stochastic null {})",
+                  e.surrogate_count, e.surrogate_rank, e.surrogate_p,
+                  e.surrogate_rejected ? "rejected" : "kept"));
+  c.noise_like = !e.surrogate_rejected;
 }
 
 void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
@@ -101,14 +106,13 @@ void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
 }
 
 Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run) {
-  const bool chaotic = !c.steady && c.positive && c.deterministic &&
-                       !c.clearly_regular && !c.surrogate_linear;
+  const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
   // concentrated spectrum and a persisting autocorrelation must both say so.
   const bool regular = !c.steady && !c.positive &&
                        (zero_one_run ? c.regular_K : c.concentrated && c.persistent);
   const bool stochastic =
-      !c.steady && !regular && !c.deterministic && !c.surrogate_nonlinear && c.diffusive;
+      !c.steady && !regular && !c.deterministic && c.noise_like && c.diffusive;
   if (chaotic) return Regime::kChaotic;
   if (v.stick_slip) return Regime::kStickSlip;
   if (c.steady) return Regime::kSteady;
@@ -140,13 +144,13 @@ const char* regime_name(Regime r) {
 }
 
 std::string verdict_rule(const VerdictOptions&) {
-  return "chaotic = exponential divergence AND deterministic AND NOT (0-1 K's upper quartile "
-         "low, where run) AND "
-         "NOT (surrogates keep the linear null, where run); else stick-slip if flagged; else "
+  return "deterministic = more predictable than every surrogate (where run; else prediction "
+         "ratio low); chaotic = exponential divergence AND deterministic AND NOT (0-1 K's upper "
+         "quartile low, where run); else stick-slip if flagged; else "
          "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
          "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
-         "incommensurate line, periodic without; else stochastic = NOT deterministic AND NOT "
-         "more predictable than the surrogates AND 0-1 K high (the test must have run); else "
+         "incommensurate line, periodic without; else stochastic = NOT deterministic AND (surrogates "
+         "keep the linear null, where run) AND 0-1 K high (the test must have run); else "
          "undetermined";
 }
 
