@@ -42,6 +42,8 @@ struct RunRecord {
   double broadband = kNaN, late_acf = kNaN;
   std::string regime = "undetermined";
   bool chaotic = false, stick_slip = false;
+  double zero_one_K = kNaN;        ///< the 0-1 test's median K (NaN: not run)
+  double prediction_ratio = kNaN;  ///< local-constant / linear prediction error
 
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
@@ -59,8 +61,13 @@ struct PointSummary {
   std::size_t runs = 0, failed = 0;
   double stick_slip_incidence = 0.0;  ///< fraction of the successful runs
   double chaos_incidence = 0.0;
+  /// Fraction of the successful runs with each regime, in the order of sweep_regime_names().
+  std::vector<double> regime_incidence;
   double mean_v = kNaN, mean_lambda = kNaN;
 };
+
+/// Every regime name a run can carry (columns of points.csv).
+const std::vector<std::string>& sweep_regime_names();
 
 struct SweepSummary {
   std::size_t runs = 0, failed = 0, points = 0;
