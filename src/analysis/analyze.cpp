@@ -84,6 +84,32 @@ void run_evidence_tests(std::span<const double> x, const AnalysisOptions& o, Ana
   e.surrogate_more_predictable = r.surrogate.more_predictable;
 }
 
+// Wolf's program on a record without deterministic structure measures nothing (white noise
+// reads ~300 /s) and is the analysis's most expensive part there (1e5 samples: 10 s of 11.5):
+// it is not run when the local-constant predictor does no better than the linear one, the
+// signature of linear noise (docs/analysis.md "Wolf's status").
+void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
+              AnalysisResult& r) {
+  if (r.prediction.computed && r.prediction.ratio() >= 1.0) {
+    r.wolf_status = fmt::format(
+        "not run: no deterministic structure (local-constant prediction error {:.3g} >= linear "
+        "{:.3g}); an exponent is not defined for noise",
+        r.prediction.nonlinear, r.prediction.linear);
+    return;
+  }
+  WolfOptions w;
+  w.dimension = d.dimension;
+  w.delay = d.delay;
+  w.theiler = d.theiler;
+  w.typical_period = d.typical_period;
+  r.wolf = wolf_exponent(x, rate_Hz, w);
+  r.wolf_run = true;
+  r.wolf_status = r.wolf.measured_s > 0.0
+                      ? fmt::format("measured over {:.4g} s (all chains)", r.wolf.measured_s)
+                      : "nothing measured: every pair collapsed below the smallest scale (a "
+                        "strictly periodic record); 0 is reported";
+}
+
 void note_lines(std::span<const double> x, AnalysisResult& r) {
   r.lines = spectral_lines(x);
   r.evidence.second_line_power = r.lines.second_power;
@@ -157,16 +183,14 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   d.delay = tau;
   d.theiler = r.theiler;
   d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  run_evidence_tests(x, o, r);
   r.divergence = divergence_exponent(x, rate_Hz, d);
-  if (o.wolf) {
-    WolfOptions w;
-    w.dimension = d.dimension;
-    w.delay = tau;
-    w.theiler = r.theiler;
-    w.typical_period = d.typical_period;
-    r.wolf = wolf_exponent(x, rate_Hz, w);
-    r.wolf_run = true;
-  }
+  r.divergence_status =
+      r.divergence.found_linear_region
+          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
+                        r.divergence.fit_last)
+          : "no rising linear region: no exponential divergence, or the record is too short";
+  if (o.wolf) run_wolf(x, rate_Hz, d, r);
   r.poincare = poincare_section(x, tau, rate_Hz);
   r.maxima_map = successive_maxima(x);
 
@@ -174,7 +198,6 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
-  run_evidence_tests(x, o, r);
   note_lines(x, r);
   r.verdict = decide_regime(e, o.verdict);
   return r;

@@ -114,6 +114,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                       r.wolf.lambda_per_s, r.wolf.uncertainty_per_s, bits(r.wolf.lambda_per_s),
                       r.wolf.replacements);
     }
+    if (!r.wolf_status.empty()) out += "  Wolf: " + r.wolf_status + "\n";
     out += fmt::format("Poincare section: {} points; successive maxima: {} pairs\n",
                        r.poincare.points.size(), r.maxima_map.size());
     out += evidence_summary(r);
@@ -165,11 +166,13 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
         {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
       {"aligned_in_time", r.divergence.aligned},
       {"method", "Rosenstein/Kantz divergence, automatic linear region, jackknife"}};
-  if (r.wolf_run) {
-    j["lyapunov"]["wolf"] = {{"value", number(r.wolf.lambda_per_s)},
-                             {"uncertainty", number(r.wolf.uncertainty_per_s)},
+  j["lyapunov"]["divergence"]["status"] = r.divergence_status;
+  if (!r.wolf_status.empty()) {
+    j["lyapunov"]["wolf"] = {{"value", r.wolf_run ? number(r.wolf.lambda_per_s) : nullptr},
+                             {"status", r.wolf_status},
+                             {"uncertainty", r.wolf_run ? number(r.wolf.uncertainty_per_s) : nullptr},
                              {"unit", "1/s"},
-                             {"value_bits", number(bits(r.wolf.lambda_per_s))},
+                             {"value_bits", r.wolf_run ? number(bits(r.wolf.lambda_per_s)) : nullptr},
                              {"unit_bits", "bits/s"},
                              {"replacements", r.wolf.replacements},
                              {"method", "Wolf, Swift, Swinney & Vastano 1985"}};

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
@@ -53,8 +54,10 @@ struct AnalysisResult {
   PredictionErrors prediction;
   SurrogateTest surrogate;
   SpectralLines lines;
+  std::string divergence_status;  ///< what the divergence curve measured, or why nothing
   bool wolf_run = false;
   WolfResult wolf;
+  std::string wolf_status;  ///< empty: Wolf not requested; else what it measured or why not
   PoincareSection poincare;
   std::vector<std::array<double, 2>> maxima_map;
   RegimeEvidence evidence;
