@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/fft.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/analysis_output.hpp"
 #include "validation_corpus.hpp"
 
 namespace pneumachaos {
@@ -100,6 +102,31 @@ TEST(ZeroOne, OversampledFlowNeedsDownSampling) {
   const ZeroOneResult few = zero_one_test(lorenz_x(1000), 17);
   EXPECT_FALSE(few.run);
   EXPECT_NE(few.reason.find("at least 200"), std::string::npos);
+}
+
+TEST(Evidence, TooShortForTheTestsSaysSoAndDegradesWithoutNaN) {
+  // 1,500 samples of a 10 Hz tone at 1 kHz: the 0-1 test gets 1500 / 25 = 60 points (< 200)
+  // and 39 surrogates are asked for on a record long enough for them (>= 500 samples).
+  AnalysisOptions o;
+  o.surrogates.count = 39;
+  const AnalysisResult r = analyze_series(sine(1500, 10.0, 1000.0, 0.05), 1000.0, o);
+  EXPECT_FALSE(r.zero_one.run);
+  bool said = false;
+  for (const auto& line : r.verdict.evidence) {
+    said = said || line.find("0-1 test: not run") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  // Without the 0-1 test, regular rests on the concentrated spectrum and the persisting ACF.
+  EXPECT_EQ(r.verdict.regime, Regime::kPeriodic);
+  const std::string json = analysis_json(r, "test", "x", "-");
+  EXPECT_EQ(json.find("NaN"), std::string::npos);
+  EXPECT_EQ(json.find("nan"), std::string::npos);
+  EXPECT_NE(json.find("\"zero_one\""), std::string::npos);
+  // 300 samples: too short for the surrogates too, and for a verdict (undetermined).
+  const AnalysisResult tiny = analyze_series(sine(300, 10.0, 1000.0, 0.05), 1000.0, o);
+  EXPECT_FALSE(tiny.surrogate.run);
+  EXPECT_NE(tiny.surrogate.reason.find("at least 500"), std::string::npos);
+  EXPECT_EQ(tiny.verdict.regime, Regime::kUndetermined);
 }
 
 }  // namespace
