@@ -3,7 +3,10 @@
 file(READ "${FILE}" json)
 foreach(path "lyapunov;wolf;value" "lyapunov;wolf;unit" "lyapunov;divergence;value"
              "lyapunov;divergence;uncertainty" "lyapunov;divergence;unit" "verdict;regime"
-             "verdict;chaotic" "verdict;stick_slip")
+             "verdict;chaotic" "verdict;stick_slip" "zero_one;run" "zero_one;K;value"
+             "zero_one;K;unit" "zero_one;K_q25;value" "zero_one;K_q75;value" "zero_one;step;unit"
+             "surrogate;run" "surrogate;count" "surrogate;rank" "surrogate;p_value;value"
+             "surrogate;null_rejected" "surrogate;statistic;value" "prediction;ratio;value")
   string(JSON value ERROR_VARIABLE err GET "${json}" ${path})
   if(err)
     message(FATAL_ERROR "missing key ${path}: ${err}")

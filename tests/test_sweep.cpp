@@ -1,5 +1,7 @@
 // Sweeps: incidence arithmetic, reproducible repeats, determinism across threads, journal.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <unistd.h>
 
 #include <filesystem>
@@ -51,6 +53,8 @@ TEST(Sweep, IncidenceArithmeticOnKnownVerdicts) {
       rec.mean_v = 0.01 * (p + 1);
       rec.stick_slip = p == 0;
       rec.chaotic = p == 2 || (p == 1 && r < 3);
+      rec.regime = rec.chaotic ? "chaotic" : rec.stick_slip ? "stick-slip" : "undetermined";
+      if (p == 2 && r == 0) rec.regime = "stochastic";  // a run's own regime, counted apart
       if (p == 1 && r == 3) rec.ok = false;
       records.push_back(rec);
     }
@@ -66,6 +70,18 @@ TEST(Sweep, IncidenceArithmeticOnKnownVerdicts) {
   EXPECT_EQ(s.chaos_full_points, 2u);
   EXPECT_EQ(s.chaos_any_points, 2u);
   EXPECT_DOUBLE_EQ(s.per_point[2].coordinates[0], 3.0);
+  // Incidence of each regime: fractions of the successful runs, in sweep_regime_names() order.
+  const auto& names = sweep_regime_names();
+  const auto share = [&](std::size_t p, const std::string& name) {
+    return s.per_point[p].regime_incidence.at(
+        std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  EXPECT_DOUBLE_EQ(share(0, "stick-slip"), 1.0);
+  EXPECT_DOUBLE_EQ(share(1, "chaotic"), 1.0);
+  EXPECT_DOUBLE_EQ(share(2, "chaotic"), 0.75);
+  EXPECT_DOUBLE_EQ(share(2, "stochastic"), 0.25);
+  EXPECT_DOUBLE_EQ(share(2, "periodic"), 0.0);
+  EXPECT_EQ(names.size(), 7u);
 }
 
 TEST(Sweep, ZeroVariationGivesIdenticalRepeats) {

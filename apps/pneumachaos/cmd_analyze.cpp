@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+#include <climits>
+#include <cstdint>
 #include <optional>
 
 #include "commands.hpp"
@@ -23,6 +26,23 @@ AnalysisResult analyzed(const Channel& channel, double rate_Hz, const AnalysisOp
   }
 }
 
+// The integer options are read as text and checked here, so that a bad value is a
+// pneumachaos::Error naming the option (exit code 2) like every other bad input.
+long long integer_option(const std::string& name, const std::string& text, long long min) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size()) {
+    throw pneumachaos::Error(name, fmt::format("expected an integer, got \"{}\"", text));
+  }
+  if (v < min) throw pneumachaos::Error(name, fmt::format("{} is out of range: must be >= {}", v, min));
+  return v;
+}
+
+std::size_t option_or(const std::optional<std::string>& text, const std::string& name,
+                      long long min, std::size_t automatic) {
+  return text ? static_cast<std::size_t>(integer_option(name, *text, min)) : automatic;
+}
+
 }  // namespace
 
 Action add_analyze(CLI::App& app) {
@@ -33,6 +53,7 @@ Action add_analyze(CLI::App& app) {
     std::string json;
     std::string series_out;
     bool no_wolf = false;
+    std::optional<std::string> surrogates, seed, dimension, delay, theiler;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -54,14 +75,33 @@ Action add_analyze(CLI::App& app) {
                   "directory for the curves as CSV (spectrum, autocorrelation, divergence, "
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)");
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_option("--surrogates", args->surrogates,
+                  "IAAFT surrogates for the test against linear noise (default 39: a two-sided "
+                  "95 % rank test, about 0.5 s for 1e4 samples; 0 = off)");
+  cmd->add_option("--seed", args->seed,
+                  "seed of the surrogates and the 0-1 test's frequencies (any integer; default 1)");
+  cmd->add_option("--dimension", args->dimension, "embedding dimension (>= 1; default: Cao)");
+  cmd->add_option("--delay", args->delay,
+                  "embedding delay in samples (>= 1; default: mutual information)");
+  cmd->add_option("--theiler", args->theiler,
+                  "Theiler window in samples (>= 0; default: max(delay, first ACF zero))");
   return [args]() {
+    AnalysisOptions options;
+    options.wolf = !args->no_wolf;
+    options.surrogates.count = option_or(args->surrogates, "--surrogates", 0, 39);
+    if (args->seed) {
+      const long long seed = integer_option("--seed", *args->seed, LLONG_MIN);
+      options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer
+    }
+    options.dimension = option_or(args->dimension, "--dimension", 1, 0);
+    options.delay = option_or(args->delay, "--delay", 1, 0);
+    options.theiler_given = args->theiler.has_value();
+    options.theiler = option_or(args->theiler, "--theiler", 0, 0);
     CsvSeriesOptions input;
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
     const TimeSeries series = read_csv_series(args->file, input);
     const Channel& channel = series.channels().front();
-    AnalysisOptions options;
-    options.wolf = !args->no_wolf;
     const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
     // The JSON and the curves appear together or not at all.

@@ -42,7 +42,88 @@ void rest_statistics(std::span<const double> x, double level, std::size_t min_le
   e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
 }
 
+// The evidence beyond the exponents: the 0-1 test on the record down-sampled, the prediction
+// errors (determinism) and, when asked, the surrogate test. They read the record at one
+// scale: the delay, but at most a quarter of the orbital period. The mutual information's
+// first minimum can lie beyond that on a short oversampled record (Lorenz at dt = 0.005,
+// 1e4 samples: 125 samples, two thirds of an orbit), where samples a quarter period apart are
+// already far from redundant. The period here is the maxima spacing of the record smoothed
+// over one delay, which noise does not shorten (docs/analysis.md "Evidence scale").
+void run_evidence_tests(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
+  const double period = smoothed_period(x, r.delay.delay);
+  const auto quarter = static_cast<std::size_t>(std::lround(period / 4.0));
+  const std::size_t scale = std::clamp<std::size_t>(quarter, 1, r.delay.delay);
+  ZeroOneOptions z = o.zero_one;
+  z.seed = o.seed;
+  // An oversampled flow walks smoothly at the sample scale and reads K ~ 0 even when chaotic.
+  r.zero_one = zero_one_test(x, scale, z);
+  PredictionOptions p;
+  p.dimension = r.dimension.dimension;
+  p.delay = scale;
+  p.theiler = r.theiler;
+  r.prediction = prediction_errors(x, p);
+  SurrogateOptions s = o.surrogates;
+  s.seed = o.seed;
+  r.surrogate = surrogate_test(x, p, s);
+
+  RegimeEvidence& e = r.evidence;
+  e.zero_one_run = r.zero_one.run;
+  e.zero_one_note = r.zero_one.reason;
+  e.zero_one_K = r.zero_one.K;
+  e.zero_one_q25 = r.zero_one.K_q25;
+  e.zero_one_q75 = r.zero_one.K_q75;
+  e.prediction_computed = r.prediction.computed;
+  e.prediction_nonlinear = r.prediction.nonlinear;
+  e.prediction_linear = r.prediction.linear;
+  e.surrogate_run = r.surrogate.run;
+  e.surrogate_note = r.surrogate.reason;
+  e.surrogate_count = r.surrogate.surrogate_statistics.size();
+  e.surrogate_rank = r.surrogate.rank;
+  e.surrogate_p = r.surrogate.p_value;
+  e.surrogate_rejected = r.surrogate.rejected;
+  e.surrogate_more_predictable = r.surrogate.more_predictable;
+}
+
+// Wolf's program on a record without deterministic structure measures nothing (white noise
+// reads ~300 /s) and is the analysis's most expensive part there (1e5 samples: 10 s of 11.5):
+// it is not run when the local-constant predictor does no better than the linear one, the
+// signature of linear noise (docs/analysis.md "Wolf's status").
+void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
+              AnalysisResult& r) {
+  if (r.prediction.computed && r.prediction.ratio() >= 1.0) {
+    r.wolf_status = fmt::format(
+        "not run: no deterministic structure (local-constant prediction error {:.3g} >= linear "
+        "{:.3g}); an exponent is not defined for noise",
+        r.prediction.nonlinear, r.prediction.linear);
+    return;
+  }
+  WolfOptions w;
+  w.dimension = d.dimension;
+  w.delay = d.delay;
+  w.theiler = d.theiler;
+  w.typical_period = d.typical_period;
+  r.wolf = wolf_exponent(x, rate_Hz, w);
+  r.wolf_run = true;
+  r.wolf_status = r.wolf.measured_s > 0.0
+                      ? fmt::format("measured over {:.4g} s (all chains)", r.wolf.measured_s)
+                      : "nothing measured: every pair collapsed below the smallest scale (a "
+                        "strictly periodic record); 0 is reported";
+}
+
+void note_lines(std::span<const double> x, AnalysisResult& r) {
+  r.lines = spectral_lines(x);
+  r.evidence.second_line_power = r.lines.second_power;
+  r.evidence.second_line_ratio =
+      r.lines.first_frequency > 0 ? r.lines.second_frequency / r.lines.first_frequency : 0.0;
+  r.evidence.second_line_incommensurate = r.lines.incommensurate;
+}
+
 }  // namespace
+
+void AnalysisOptions::validate() const {
+  zero_one.validate();
+  surrogates.validate();
+}
 
 AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const AnalysisOptions& o) {
   constexpr std::size_t kMinSamples = 200;
@@ -56,6 +137,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   if (!(std::isfinite(rate_Hz) && rate_Hz > 0.0)) {
     throw Error("analyze", fmt::format("the sample rate must be positive, got {}", rate_Hz));
   }
+  o.validate();
   AnalysisResult r;
   r.samples = x.size();
   r.rate_Hz = rate_Hz;
@@ -98,7 +180,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   const std::size_t zero_lag =
       r.acf.first_zero_s > 0 ? static_cast<std::size_t>(std::lround(r.acf.first_zero_s * rate_Hz))
                              : 1;
-  r.theiler = o.theiler > 0 ? o.theiler : std::max(tau, zero_lag);
+  r.theiler = o.theiler > 0 || o.theiler_given ? o.theiler : std::max(tau, zero_lag);
   r.dimension =
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
 
@@ -107,16 +189,14 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   d.delay = tau;
   d.theiler = r.theiler;
   d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  run_evidence_tests(x, o, r);
   r.divergence = divergence_exponent(x, rate_Hz, d);
-  if (o.wolf) {
-    WolfOptions w;
-    w.dimension = d.dimension;
-    w.delay = tau;
-    w.theiler = r.theiler;
-    w.typical_period = d.typical_period;
-    r.wolf = wolf_exponent(x, rate_Hz, w);
-    r.wolf_run = true;
-  }
+  r.divergence_status =
+      r.divergence.found_linear_region
+          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
+                        r.divergence.fit_last)
+          : "no rising linear region: no exponential divergence, or the record is too short";
+  if (o.wolf) run_wolf(x, rate_Hz, d, r);
   r.poincare = poincare_section(x, tau, rate_Hz);
   r.maxima_map = successive_maxima(x);
 
@@ -124,6 +204,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
+  note_lines(x, r);
   r.verdict = decide_regime(e, o.verdict);
   return r;
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <nanoflann.hpp>
 #include <numeric>
@@ -39,6 +41,38 @@ double DelayEmbedding::distance2(std::size_t i, std::size_t j) const {
 
 namespace {
 
+// The shortest prefix of x that holds a repeated value (x.size() + 1 if none). One analysis
+// builds about ten indices on the same series, so the last answer is remembered, keyed by the
+// series' address, length and a hash of its contents.
+std::size_t first_repeat_length(std::span<const double> x) {
+  struct Memo {
+    const double* data = nullptr;
+    std::size_t size = 0;
+    std::uint64_t hash = 0;
+    std::size_t length = 0;
+  };
+  thread_local Memo memo;
+  std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a over the values' bit patterns
+  for (double v : x) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    hash = (hash ^ bits) * 1099511628211ULL;
+  }
+  if (memo.data == x.data() && memo.size == x.size() && memo.hash == hash) return memo.length;
+  std::vector<std::pair<double, std::size_t>> v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) v[i] = {x[i], i};
+  std::sort(v.begin(), v.end());
+  std::size_t length = x.size() + 1;
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    // Equal values sit together in ascending index order: the second one ends a prefix.
+    if (v[i].first == v[i - 1].first && (i < 2 || v[i - 2].first != v[i].first)) {
+      length = std::min(length, v[i].second + 1);
+    }
+  }
+  memo = {x.data(), x.size(), hash, length};
+  return length;
+}
+
 // Distinct delay vectors and the times at which each occurs. Records that rest (a stuck
 // piston's v = 0) or are quantised repeat one vector thousands of times; the tree holds each
 // distinct vector once, so a query does not wade through its repeats.
@@ -48,6 +82,17 @@ struct Groups {
   std::vector<std::size_t> member;          ///< ascending indices within each group
 
   Groups(const DelayEmbedding& e, std::size_t points) {
+    if (points < first_repeat_length(e.series())) {
+      // Equal vectors need equal first coordinates: with no repeated value among them, every
+      // group is one vector, in time order. This skips the lexicographic sort of the vectors,
+      // most of the cost of an index on a record without repeats; the neighbours are the same.
+      representative.resize(points);
+      std::iota(representative.begin(), representative.end(), std::size_t{0});
+      member = representative;
+      start.resize(points + 1);
+      std::iota(start.begin(), start.end(), std::size_t{0});
+      return;
+    }
     std::vector<std::size_t> order(points);
     std::iota(order.begin(), order.end(), std::size_t{0});
     const auto less = [&](std::size_t a, std::size_t b) {

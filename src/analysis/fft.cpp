@@ -29,4 +29,31 @@ std::vector<double> inverse_dft_real(const std::vector<std::complex<double>>& X)
   return re;
 }
 
+struct DftPlan::Impl {
+  explicit Impl(std::size_t n) : forward(n, false), inverse(n, true) {}
+  kissfft<double> forward, inverse;
+};
+
+DftPlan::DftPlan(std::size_t n) : n_(n), impl_(std::make_unique<Impl>(n)), buffer_(n) {}
+DftPlan::~DftPlan() = default;
+
+void DftPlan::forward(std::span<const double> x, std::vector<std::complex<double>>& X) const {
+  for (std::size_t i = 0; i < n_; ++i) buffer_[i] = x[i];
+  X.resize(n_);
+  impl_->forward.transform(buffer_.data(), X.data());
+}
+
+void DftPlan::transform(const std::vector<std::complex<double>>& in,
+                        std::vector<std::complex<double>>& out, bool inverse) const {
+  out.resize(n_);
+  (inverse ? impl_->inverse : impl_->forward).transform(in.data(), out.data());
+}
+
+void DftPlan::inverse_real(const std::vector<std::complex<double>>& X,
+                           std::vector<double>& x) const {
+  impl_->inverse.transform(X.data(), buffer_.data());
+  x.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) x[i] = buffer_[i].real();
+}
+
 }  // namespace pneumachaos

@@ -150,6 +150,10 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
   const std::size_t chains = std::max<std::size_t>(1, o.chains);
   double log_sum = 0.0, measured_s = 0.0;
   std::vector<double> chain_log(chains, 0.0), chain_time(chains, 0.0);
+  // Stretching pooled by where along the record it was measured: the chains share the record,
+  // so their spread misses how the estimate varies along it; contiguous batches see that.
+  constexpr std::size_t kBatches = 10;
+  std::vector<double> batch_log(kBatches, 0.0), batch_time(kBatches, 0.0);
   for (std::size_t c = 0; c < chains; ++c) {
     // Chains start at staggered points of the first orbit and pool their stretching: one
     // chain on a finite record rests on a few dozen replacements.
@@ -180,6 +184,9 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
       const double d = separation(fid, measured.time, sep);
       if (measured.age >= settle && d_prev > 0.0 && d > 0.0) {
         chain_log[c] += std::log(d / d_prev);
+        const std::size_t b = std::min(kBatches - 1, fid * kBatches / usable);
+        batch_log[b] += std::log(d / d_prev);
+        batch_time[b] += static_cast<double>(evolve) * dt;
         chain_time[c] += static_cast<double>(evolve) * dt;
         if (c == 0) {  // the running estimate shown is the first chain's, as in Wolf's paper
           ++r.intervals;
@@ -213,15 +220,18 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
   // record) is a result: no stretching was observed.
   r.measured_s = measured_s;
   r.lambda_per_s = measured_s > 0.0 ? log_sum / measured_s : 0.0;
-  // Spread between chains (standard error of their time-weighted mean).
+  // Batch means (the record cut into 10 contiguous stretches, all chains pooled): the
+  // standard error of the time-weighted mean of the batches' exponents.
   double var = 0.0, weight = 0.0;
-  for (std::size_t c = 0; c < chains; ++c) {
-    if (chain_time[c] <= 0.0) continue;
-    const double lc = chain_log[c] / chain_time[c];
-    var += chain_time[c] * (lc - r.lambda_per_s) * (lc - r.lambda_per_s);
-    weight += chain_time[c];
+  std::size_t used = 0;
+  for (std::size_t b = 0; b < kBatches; ++b) {
+    if (batch_time[b] <= 0.0) continue;
+    const double lb = batch_log[b] / batch_time[b];
+    var += batch_time[b] * (lb - r.lambda_per_s) * (lb - r.lambda_per_s);
+    weight += batch_time[b];
+    ++used;
   }
-  r.uncertainty_per_s = chains > 1 && weight > 0.0 ? std::sqrt(var / weight / (chains - 1)) : 0.0;
+  r.uncertainty_per_s = used > 1 && weight > 0.0 ? std::sqrt(var / weight / (used - 1.0)) : 0.0;
   return r;
 }
 

@@ -6,6 +6,122 @@
 #include <cmath>
 
 namespace pneumachaos {
+namespace {
+
+// The outcome of every criterion; see verdict_rule for how they combine.
+struct Criteria {
+  bool steady = false, positive = false, deterministic = false;
+  bool diffusive = false, regular_K = false;  ///< 0-1 test median (both false when not run)
+  bool clearly_regular = false;               ///< 0-1 test: even the upper quartile is low
+  bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
+  bool persistent = false, concentrated = false, second_line = false;
+};
+
+class Notes {
+ public:
+  explicit Notes(Verdict& v) : v_(v) {}
+  bool operator()(bool ok, const std::string& text) {
+    v_.evidence.push_back(fmt::format("[{}] {}", ok ? "yes" : "no", text));
+    return ok;
+  }
+  void info(const std::string& text) { v_.evidence.push_back("[--] " + text); }
+
+ private:
+  Verdict& v_;
+};
+
+void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
+  c.positive = note(
+      e.lyapunov_found && e.lyapunov_per_s > 0.0 &&
+          e.lyapunov_per_s > o.lyapunov_sigmas * e.lyapunov_uncertainty_per_s,
+      e.lyapunov_found
+          ? fmt::format("exponential divergence: exponent {:.4g} +- {:.2g} 1/s above {} sigma",
+                        e.lyapunov_per_s, e.lyapunov_uncertainty_per_s, o.lyapunov_sigmas)
+          : std::string("exponential divergence: the divergence curve has no rising linear "
+                        "region"));
+}
+
+void note_zero_one(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
+  if (!e.zero_one_run) {
+    note.info("0-1 test: " + e.zero_one_note);
+    return;
+  }
+  c.diffusive = note(e.zero_one_K >= o.zero_one_split,
+                     fmt::format("0-1 test: K = {:.3f} (quartiles {:.3f} .. {:.3f}) >= {} "
+                                 "(chaotic or stochastic; below: regular)",
+                                 e.zero_one_K, e.zero_one_q25, e.zero_one_q75, o.zero_one_split));
+  c.regular_K = !c.diffusive;
+  c.clearly_regular = e.zero_one_q75 < o.zero_one_split;
+}
+
+// Determinism: with the surrogate test run, "more predictable than every IAAFT surrogate"
+// (a calibrated test against linear noise); without it, the prediction-error ratio alone.
+void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
+                      Criteria& c) {
+  const double ratio =
+      e.prediction_linear > 0 ? e.prediction_nonlinear / e.prediction_linear : 1.0;
+  const std::string line = fmt::format(
+      "local-constant prediction error {:.3g}, linear {:.3g} (ratio {:.3g}; deterministic "
+      "below {})",
+      e.prediction_nonlinear, e.prediction_linear, ratio, o.max_prediction_ratio);
+  const bool by_ratio = e.prediction_computed && ratio <= o.max_prediction_ratio;
+  note.info(fmt::format("Cao's max |E2 - 1| = {:.3f} (reported; ~0 for white noise)",
+                        e.determinism));
+  if (!e.surrogate_run) {
+    note.info("surrogate test: " + e.surrogate_note);
+    if (!e.prediction_computed) {
+      note.info("determinism: the record is too short for the prediction test");
+      return;
+    }
+    c.deterministic = note(by_ratio, "deterministic: " + line);
+    c.noise_like = !c.deterministic;
+    return;
+  }
+  note.info(line);
+  c.deterministic = note(
+      e.surrogate_more_predictable,
+      fmt::format("deterministic: the record's prediction error is below all {} IAAFT surrogates "
+                  "(rank {}, p = {:.3f}; linear-stochastic null {})",
+                  e.surrogate_count, e.surrogate_rank, e.surrogate_p,
+                  e.surrogate_rejected ? "rejected" : "kept"));
+  c.noise_like = !e.surrogate_rejected;
+}
+
+void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
+                     Criteria& c) {
+  c.persistent = note(e.late_acf >= o.periodic_min_late_acf,
+                      fmt::format("autocorrelation persists: late envelope {:.3f} >= {}",
+                                  e.late_acf, o.periodic_min_late_acf));
+  c.concentrated = note(e.broadband_share < o.periodic_max_broadband,
+                        fmt::format("concentrated spectrum: broadband share {:.3f} < {}",
+                                    e.broadband_share, o.periodic_max_broadband));
+  c.second_line = note(
+      e.second_line_incommensurate && e.second_line_power >= o.second_line_min_power,
+      e.second_line_power > 0.0
+          ? fmt::format("second spectral line: {:.3g} of the first's power (>= {}), frequency "
+                        "ratio {:.4f} ({})",
+                        e.second_line_power, o.second_line_min_power, e.second_line_ratio,
+                        e.second_line_incommensurate ? "no p/q with q <= 3" : "rational")
+          : std::string("second spectral line: none"));
+}
+
+Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run) {
+  const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
+  // The 0-1 test tells regular from irregular motion on any waveform; without it, a
+  // concentrated spectrum and a persisting autocorrelation must both say so.
+  const bool regular = !c.steady && !c.positive &&
+                       (zero_one_run ? c.regular_K : c.concentrated && c.persistent);
+  const bool stochastic =
+      !c.steady && !regular && !c.deterministic && c.noise_like && c.diffusive;
+  if (chaotic) return Regime::kChaotic;
+  if (v.stick_slip) return Regime::kStickSlip;
+  if (c.steady) return Regime::kSteady;
+  if (regular) return c.second_line ? Regime::kQuasiPeriodic : Regime::kPeriodic;
+  if (stochastic) return Regime::kStochastic;
+  return Regime::kUndetermined;
+}
+
+}  // namespace
 
 const char* regime_name(Regime r) {
   switch (r) {
@@ -13,14 +129,29 @@ const char* regime_name(Regime r) {
       return "steady";
     case Regime::kPeriodic:
       return "periodic";
+    case Regime::kQuasiPeriodic:
+      return "quasi-periodic";
     case Regime::kStickSlip:
       return "stick-slip";
     case Regime::kChaotic:
       return "chaotic";
+    case Regime::kStochastic:
+      return "stochastic";
     case Regime::kUndetermined:
       return "undetermined";
   }
   return "?";
+}
+
+std::string verdict_rule(const VerdictOptions&) {
+  return "deterministic = more predictable than every surrogate (where run; else prediction "
+         "ratio low); chaotic = exponential divergence AND deterministic AND NOT (0-1 K's upper "
+         "quartile low, where run); else stick-slip if flagged; else "
+         "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
+         "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
+         "incommensurate line, periodic without; else stochastic = NOT deterministic AND (surrogates "
+         "keep the linear null, where run) AND 0-1 K high (the test must have run); else "
+         "undetermined";
 }
 
 bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
@@ -29,15 +160,13 @@ bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
 
 Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   Verdict v;
-  const auto note = [&](bool ok, const std::string& text) {
-    v.evidence.push_back(fmt::format("[{}] {}", ok ? "yes" : "no", text));
-    return ok;
-  };
+  Notes note(v);
   if (e.samples < o.min_samples) {
     note(false,
          fmt::format("{} samples, at least {} needed for a verdict", e.samples, o.min_samples));
     return v;
   }
+  Criteria c;
   v.stick_slip =
       note(e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share,
            fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x max|x| "
@@ -45,35 +174,17 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
                        e.rest_intervals, o.min_rest_samples, o.rest_fraction, o.min_rest_intervals,
                        100.0 * e.rest_share, 100.0 * o.min_rest_share));
   const double scale = std::max(std::abs(e.last_half_mean), e.range);
-  const bool steady =
-      note(is_steady(e, o), fmt::format("steady: std of the last half {:.4g} <= {} x {:.4g}",
-                                        e.last_half_std, o.steady_variation, scale));
-  const bool positive = note(
-      e.lyapunov_found && e.lyapunov_per_s > o.lyapunov_sigmas * e.lyapunov_uncertainty_per_s &&
-          e.lyapunov_per_s > 0.0,
-      e.lyapunov_found
-          ? fmt::format("divergence exponent {:.4g} +- {:.2g} 1/s above {} sigma", e.lyapunov_per_s,
-                        e.lyapunov_uncertainty_per_s, o.lyapunov_sigmas)
-          : std::string("divergence curve: no rising linear region"));
-  const bool broad = note(e.broadband_share >= o.min_broadband,
-                          fmt::format("broadband spectrum: share outside the strongest bins "
-                                      "{:.3f} >= {}",
-                                      e.broadband_share, o.min_broadband));
-  const bool decays = note(e.late_acf <= o.max_late_acf,
-                           fmt::format("autocorrelation decayed: late envelope {:.3f} <= {}",
-                                       e.late_acf, o.max_late_acf));
-  const bool deterministic = note(e.determinism >= o.min_determinism,
-                                  fmt::format("deterministic: max |E2 - 1| = {:.3f} >= {} (Cao)",
-                                              e.determinism, o.min_determinism));
-  v.chaotic = !steady && positive && broad && decays && deterministic;
-  const bool periodic =
-      !steady && !v.chaotic && !positive &&
-      (e.broadband_share < o.periodic_max_broadband || e.late_acf >= o.periodic_min_late_acf);
-  v.regime = v.chaotic      ? Regime::kChaotic
-             : v.stick_slip ? Regime::kStickSlip
-             : steady       ? Regime::kSteady
-             : periodic     ? Regime::kPeriodic
-                            : Regime::kUndetermined;
+  c.steady = note(is_steady(e, o), fmt::format("steady: std of the last half {:.4g} <= {} x {:.4g}",
+                                               e.last_half_std, o.steady_variation, scale));
+  if (!c.steady) {
+    note_exponent(e, o, note, c);
+    note_zero_one(e, o, note, c);
+    note_determinism(e, o, note, c);
+    note_regularity(e, o, note, c);
+  }
+  v.regime = combine(c, v, e.zero_one_run);
+  v.chaotic = v.regime == Regime::kChaotic;
+  note.info("rule: " + verdict_rule(o));
   return v;
 }
 

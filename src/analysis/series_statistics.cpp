@@ -52,4 +52,22 @@ double mean_maxima_spacing(std::span<const double> x) {
                            : static_cast<double>(x.size());
 }
 
+std::vector<double> moving_average(std::span<const double> x, std::size_t width) {
+  std::vector<double> prefix(x.size() + 1, 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) prefix[i + 1] = prefix[i] + x[i];
+  const std::size_t half = width / 2;
+  std::vector<double> y(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t lo = i >= half ? i - half : 0;
+    const std::size_t hi = std::min(x.size(), lo + std::max<std::size_t>(width, 1));
+    y[i] = (prefix[hi] - prefix[lo]) / static_cast<double>(hi - lo);
+  }
+  return y;
+}
+
+double smoothed_period(std::span<const double> x, std::size_t width) {
+  if (width <= 1) return mean_maxima_spacing(x);
+  return mean_maxima_spacing(moving_average(x, width));
+}
+
 }  // namespace pneumachaos

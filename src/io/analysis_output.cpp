@@ -21,6 +21,66 @@ nlohmann::json quantity(double v, const std::string& unit) {
 }
 double bits(double per_s) { return per_s / std::numbers::ln2; }
 
+// The 0-1 test and the surrogate test: when not run, "run": false and the reason; numbers
+// are null, never NaN.
+nlohmann::json zero_one_json(const AnalysisResult& r) {
+  const ZeroOneResult& z = r.zero_one;
+  return {{"run", z.run},
+          {"reason", z.reason},
+          {"K", quantity(z.run ? z.K : NAN, "-")},
+          {"K_q25", quantity(z.run ? z.K_q25 : NAN, "-")},
+          {"K_q75", quantity(z.run ? z.K_q75 : NAN, "-")},
+          {"step", quantity(z.step / r.rate_Hz, "s")},
+          {"step_samples", z.step},
+          {"points", z.points},
+          {"method", "Gottwald & Melbourne 2004/2009, correlation method, median over c"}};
+}
+
+nlohmann::json surrogate_json(const AnalysisResult& r) {
+  const SurrogateTest& t = r.surrogate;
+  return {{"run", t.run},
+          {"reason", t.reason},
+          {"count", t.surrogate_statistics.size()},
+          {"samples", t.samples},
+          {"statistic", quantity(t.run ? t.statistic : NAN, "-")},
+          {"surrogate_statistics", t.surrogate_statistics},
+          {"rank", t.rank},
+          {"p_value", quantity(t.run ? t.p_value : NAN, "-")},
+          {"null_rejected", t.rejected},
+          {"more_predictable", t.more_predictable},
+          {"method", "IAAFT (Schreiber & Schmitz 1996), local-constant prediction error, "
+                     "two-sided rank test"}};
+}
+
+nlohmann::json prediction_json(const AnalysisResult& r) {
+  const PredictionErrors& p = r.prediction;
+  return {{"computed", p.computed},
+          {"horizon_samples", p.horizon},
+          {"nonlinear", quantity(p.computed ? p.nonlinear : NAN, "-")},
+          {"linear", quantity(p.computed ? p.linear : NAN, "-")},
+          {"ratio", quantity(p.computed ? p.ratio() : NAN, "-")}};
+}
+
+std::string evidence_summary(const AnalysisResult& r) {
+  const ZeroOneResult& z = r.zero_one;
+  std::string out = z.run ? fmt::format("0-1 test: K = {:.3f} (quartiles {:.3f} .. {:.3f}), "
+                                        "every {} samples, {} points\n",
+                                        z.K, z.K_q25, z.K_q75, z.step, z.points)
+                          : fmt::format("0-1 test: {}\n", z.reason);
+  if (r.prediction.computed) {
+    out += fmt::format("prediction error ({} samples ahead, / std): local-constant {:.3g}, "
+                       "linear {:.3g}\n",
+                       r.prediction.horizon, r.prediction.nonlinear, r.prediction.linear);
+  }
+  const SurrogateTest& t = r.surrogate;
+  out += t.run ? fmt::format("surrogate test: prediction error {:.3g}, {} of {} IAAFT surrogates "
+                             "lower, p = {:.3f}, linear-stochastic null {}\n",
+                             t.statistic, t.rank, t.surrogate_statistics.size(), t.p_value,
+                             t.rejected ? "rejected" : "kept")
+               : fmt::format("surrogate test: {}\n", t.reason);
+  return out;
+}
+
 }  // namespace
 
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
@@ -54,8 +114,10 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                       r.wolf.lambda_per_s, r.wolf.uncertainty_per_s, bits(r.wolf.lambda_per_s),
                       r.wolf.replacements);
     }
+    if (!r.wolf_status.empty()) out += "  Wolf: " + r.wolf_status + "\n";
     out += fmt::format("Poincare section: {} points; successive maxima: {} pairs\n",
                        r.poincare.points.size(), r.maxima_map.size());
+    out += evidence_summary(r);
   }
   out += fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n", regime_name(r.verdict.regime),
                      r.verdict.chaotic ? "yes" : "no", r.verdict.stick_slip ? "yes" : "no");
@@ -104,17 +166,22 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
         {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
       {"aligned_in_time", r.divergence.aligned},
       {"method", "Rosenstein/Kantz divergence, automatic linear region, jackknife"}};
-  if (r.wolf_run) {
-    j["lyapunov"]["wolf"] = {{"value", number(r.wolf.lambda_per_s)},
-                             {"uncertainty", number(r.wolf.uncertainty_per_s)},
+  j["lyapunov"]["divergence"]["status"] = r.divergence_status;
+  if (!r.wolf_status.empty()) {
+    j["lyapunov"]["wolf"] = {{"value", r.wolf_run ? number(r.wolf.lambda_per_s) : nullptr},
+                             {"status", r.wolf_status},
+                             {"uncertainty", r.wolf_run ? number(r.wolf.uncertainty_per_s) : nullptr},
                              {"unit", "1/s"},
-                             {"value_bits", number(bits(r.wolf.lambda_per_s))},
+                             {"value_bits", r.wolf_run ? number(bits(r.wolf.lambda_per_s)) : nullptr},
                              {"unit_bits", "bits/s"},
                              {"replacements", r.wolf.replacements},
                              {"method", "Wolf, Swift, Swinney & Vastano 1985"}};
   }
   j["poincare"] = {{"points", r.poincare.points.size()},
                    {"level", quantity(r.poincare.level, unit)}};
+  j["zero_one"] = zero_one_json(r);
+  j["surrogate"] = surrogate_json(r);
+  j["prediction"] = prediction_json(r);
   j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},

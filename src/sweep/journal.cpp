@@ -17,7 +17,9 @@ namespace {
 
 constexpr const char* kHeaderStart = "# pneumachaos sweep journal, spec ";
 
-std::string header_of(const std::string& fingerprint) { return kHeaderStart + fingerprint; }
+std::string header_of(const std::string& fingerprint) {
+  return fmt::format("{}{}, {} fields", kHeaderStart, fingerprint, RunRecord::kFields);
+}
 
 // The first line must be this sweep's header; a journal of another sweep and a damaged one
 // (no header at all) are refused with different words, since the remedies differ.
@@ -27,7 +29,7 @@ void check_header(const std::string& line, const std::string& path,
   if (line.rfind(kHeaderStart, 0) == 0) {
     throw Error(path,
                 "the journal belongs to a different sweep (another scenario, grid, repeats or "
-                "seed); refusing to resume into it");
+                "seed) or to another version of pneumachaos; refusing to resume into it");
   }
   throw Error(fmt::format("{}:1", path),
               "the journal is damaged: its first line is not a pneumachaos journal header; "

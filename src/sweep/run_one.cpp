@@ -53,6 +53,8 @@ RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat) 
       r.regime = regime_name(a.verdict.regime);
       r.chaotic = a.verdict.chaotic;
       r.stick_slip = a.verdict.stick_slip;
+      if (a.zero_one.run) r.zero_one_K = a.zero_one.K;
+      if (a.prediction.computed) r.prediction_ratio = a.prediction.ratio();
     } catch (const Error& e) {
       r.reason = e.what();  // e.g. a record too short to judge: undetermined, not failed
     }

@@ -36,14 +36,14 @@ std::uint64_t to_u64(const std::string& f) {
 std::string RunRecord::csv_header() {
   return "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
          "lambda_per_s,lambda_uncertainty_per_s,wolf_per_s,broadband_share,late_acf,regime,"
-         "chaotic,stick_slip,reason";
+         "chaotic,stick_slip,zero_one_K,prediction_ratio,reason";
 }
 
 std::string RunRecord::encode() const {
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", point, repeat,
+  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", point, repeat,
                      seed, ok ? 1 : 0, clean(termination), t_final_s, steps, sticks, mean_v, std_v,
                      lambda, lambda_uncertainty, wolf, broadband, late_acf, regime, chaotic ? 1 : 0,
-                     stick_slip ? 1 : 0, clean(reason));
+                     stick_slip ? 1 : 0, zero_one_K, prediction_ratio, clean(reason));
 }
 
 RunRecord RunRecord::decode(const std::string& line) {
@@ -52,8 +52,8 @@ RunRecord RunRecord::decode(const std::string& line) {
   std::istringstream in(line);
   while (std::getline(in, field, ',')) f.push_back(field);
   if (!line.empty() && line.back() == ',') f.emplace_back();
-  if (f.size() != 19)
-    throw Error("journal", fmt::format("a record has {} fields, expected 19", f.size()));
+  if (f.size() != kFields)
+    throw Error("journal", fmt::format("a record has {} fields, expected {}", f.size(), kFields));
   RunRecord r;
   r.point = to_u64(f[0]);
   r.repeat = to_u64(f[1]);
@@ -73,7 +73,9 @@ RunRecord RunRecord::decode(const std::string& line) {
   r.regime = f[15];
   r.chaotic = f[16] == "1";
   r.stick_slip = f[17] == "1";
-  r.reason = f[18];
+  r.zero_one_K = to_double(f[18]);
+  r.prediction_ratio = to_double(f[19]);
+  r.reason = f[20];
   return r;
 }
 

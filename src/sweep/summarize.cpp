@@ -1,8 +1,23 @@
+#include <algorithm>
 #include <cmath>
 
+#include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
+
+const std::vector<std::string>& sweep_regime_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (Regime r : {Regime::kSteady, Regime::kPeriodic, Regime::kQuasiPeriodic,
+                     Regime::kStickSlip, Regime::kChaotic, Regime::kStochastic,
+                     Regime::kUndetermined}) {
+      n.emplace_back(regime_name(r));
+    }
+    return n;
+  }();
+  return names;
+}
 
 SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records) {
   SweepSummary s;
@@ -18,6 +33,7 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
       ps.coordinates.push_back(spec.axes[a].values[index[a]]);
     ps.mean_v = 0.0;
     ps.mean_lambda = 0.0;
+    ps.regime_incidence.assign(sweep_regime_names().size(), 0.0);
   }
   for (const RunRecord& r : records) {
     PointSummary& ps = s.per_point.at(r.point);
@@ -29,6 +45,9 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
     }
     ps.stick_slip_incidence += r.stick_slip ? 1.0 : 0.0;
     ps.chaos_incidence += r.chaotic ? 1.0 : 0.0;
+    const auto& names = sweep_regime_names();
+    const auto at = std::find(names.begin(), names.end(), r.regime);
+    if (at != names.end()) ps.regime_incidence[at - names.begin()] += 1.0;
     ps.mean_v += r.mean_v;
     if (std::isfinite(r.lambda)) {
       ps.mean_lambda += r.lambda;
@@ -40,6 +59,7 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
     if (ok > 0) {
       ps.stick_slip_incidence /= ok;
       ps.chaos_incidence /= ok;
+      for (double& f : ps.regime_incidence) f /= ok;
       ps.mean_v /= ok;
     } else {
       ps.mean_v = kNaN;

@@ -25,12 +25,16 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
     AtomicFile f(dir + "/points.csv");
     f.stream() << "point," << axes_header
                << "runs,failed,stick_slip_incidence,chaos_incidence,mean_v_m_per_s,"
-                  "mean_lambda_per_s\n";
+                  "mean_lambda_per_s";
+    for (const auto& name : sweep_regime_names()) f.stream() << ",incidence_" << name;
+    f.stream() << '\n';
     for (const PointSummary& p : summary.per_point) {
       f.stream() << p.point << ',';
       for (double c : p.coordinates) f.stream() << fmt::format("{},", c);
-      f.stream() << fmt::format("{},{},{},{},{},{}\n", p.runs, p.failed, p.stick_slip_incidence,
+      f.stream() << fmt::format("{},{},{},{},{},{}", p.runs, p.failed, p.stick_slip_incidence,
                                 p.chaos_incidence, p.mean_v, p.mean_lambda);
+      for (double share : p.regime_incidence) f.stream() << fmt::format(",{}", share);
+      f.stream() << '\n';
     }
     f.commit();
   }

@@ -3,7 +3,9 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
@@ -11,8 +13,12 @@
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "pneumachaos/analysis/poincare.hpp"
+#include "pneumachaos/analysis/prediction_error.hpp"
 #include "pneumachaos/analysis/regime.hpp"
+#include "pneumachaos/analysis/spectral_lines.hpp"
 #include "pneumachaos/analysis/spectrum.hpp"
+#include "pneumachaos/analysis/surrogates.hpp"
+#include "pneumachaos/analysis/zero_one_test.hpp"
 
 namespace pneumachaos {
 
@@ -20,9 +26,17 @@ struct AnalysisOptions {
   SpectrumOptions spectrum;
   std::size_t delay = 0;      ///< 0: automatic (mutual information)
   std::size_t dimension = 0;  ///< 0: automatic (Cao)
-  std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)
+  std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)...
+  bool theiler_given = false;  ///< ...unless set: then `theiler` as given, 0 included
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
+  /// Seeds the 0-1 test's random frequencies and the surrogates (each result is a function of
+  /// the record, the options and this seed alone).
+  std::uint64_t seed = 1;
+  ZeroOneOptions zero_one;
+  /// Off in the library (the sweep analyses thousands of records); `analyze` runs 39.
+  SurrogateOptions surrogates{.count = 0};
   VerdictOptions verdict;
+  void validate() const;
 };
 
 struct AnalysisResult {
@@ -36,8 +50,14 @@ struct AnalysisResult {
   DimensionChoice dimension;
   std::size_t theiler = 0;
   DivergenceResult divergence;
+  ZeroOneResult zero_one;
+  PredictionErrors prediction;
+  SurrogateTest surrogate;
+  SpectralLines lines;
+  std::string divergence_status;  ///< what the divergence curve measured, or why nothing
   bool wolf_run = false;
   WolfResult wolf;
+  std::string wolf_status;  ///< empty: Wolf not requested; else what it measured or why not
   PoincareSection poincare;
   std::vector<std::array<double, 2>> maxima_map;
   RegimeEvidence evidence;

@@ -3,6 +3,7 @@
 
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -16,5 +17,29 @@ std::vector<std::complex<double>> forward_dft(std::span<const double> x, std::si
 
 /// Real part of the inverse DFT without the 1/n factor: sum_k X[k] exp(+2 pi i j k / n).
 std::vector<double> inverse_dft_real(const std::vector<std::complex<double>>& X);
+
+/// A forward and an inverse transform of one fixed size n, set up once and reused: the
+/// surrogate iteration transforms the same length hundreds of times.
+class DftPlan {
+ public:
+  explicit DftPlan(std::size_t n);
+  ~DftPlan();
+  DftPlan(const DftPlan&) = delete;
+  DftPlan& operator=(const DftPlan&) = delete;
+  [[nodiscard]] std::size_t size() const { return n_; }
+  /// X = forward DFT of x (x.size() == size()).
+  void forward(std::span<const double> x, std::vector<std::complex<double>>& X) const;
+  /// x = real part of the inverse DFT of X, without the 1/n factor.
+  void inverse_real(const std::vector<std::complex<double>>& X, std::vector<double>& x) const;
+  /// Complex input: out = forward (or inverse, without 1/n) DFT of in; both of size().
+  void transform(const std::vector<std::complex<double>>& in, std::vector<std::complex<double>>& out,
+                 bool inverse) const;
+
+ private:
+  struct Impl;
+  std::size_t n_;
+  std::unique_ptr<Impl> impl_;
+  mutable std::vector<std::complex<double>> buffer_;
+};
 
 }  // namespace pneumachaos

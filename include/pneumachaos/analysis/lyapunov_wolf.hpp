@@ -44,7 +44,9 @@ struct WolfOptions {
 
 struct WolfResult {
   double lambda_per_s = 0.0;
-  double uncertainty_per_s = 0.0;      ///< standard error between the chains
+  /// Standard error from batch means: the exponents of 10 contiguous stretches of the record
+  /// (all chains pooled), weighted by their measured time.
+  double uncertainty_per_s = 0.0;
   std::vector<double> running_time_s;  ///< first chain: end time of each measured interval
   std::vector<double> running_per_s;   ///< first chain's running estimate (its convergence)
   std::size_t replacements = 0;

@@ -1,7 +1,9 @@
 #pragma once
-// The regime verdict of a record (ANALYSIS.md "Regime verdict"): steady, periodic, stick-slip,
-// chaotic or undetermined, with the evidence and the thresholds that decided it. Chaotic and
-// stick-slip are separate flags, as the paper's maps overlay them.
+// The regime verdict of a record (docs/analysis.md "Regime verdict"): steady, periodic,
+// quasi-periodic, stick-slip, chaotic, stochastic or undetermined, with the evidence, the
+// thresholds and the rule that decided it. Chaotic and stick-slip are separate flags, as the
+// paper's maps overlay them. No single index vetoes: the spectrum and the autocorrelation are
+// reported, and only decide between regular regimes.
 
 #include <cstddef>
 #include <string>
@@ -9,7 +11,15 @@
 
 namespace pneumachaos {
 
-enum class Regime { kSteady, kPeriodic, kStickSlip, kChaotic, kUndetermined };
+enum class Regime {
+  kSteady,
+  kPeriodic,
+  kStickSlip,
+  kChaotic,
+  kUndetermined,
+  kQuasiPeriodic,
+  kStochastic
+};
 const char* regime_name(Regime r);
 
 struct VerdictOptions {
@@ -25,19 +35,21 @@ struct VerdictOptions {
   double min_rest_share = 0.02;
   /// Steady: the last half varies (std) by at most this fraction of max(|mean|, range).
   double steady_variation = 0.01;
-  /// Chaotic needs all of: divergence exponent above lyapunov_sigmas x its uncertainty;
-  /// broadband share of the spectrum at least min_broadband; late autocorrelation envelope at
-  /// most max_late_acf (it has decayed); Cao's E2 away from 1 by min_determinism somewhere
-  /// (E2 ~ 1 at every d marks a stochastic record).
+  /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its uncertainty.
   double lyapunov_sigmas = 3.0;
-  double min_broadband = 0.1;  ///< a tone with 5 % noise: 0.005; Lorenz x: 0.24
-  double max_late_acf = 0.35;
-  double min_determinism = 0.1;
-  /// Periodic: no significant positive exponent, and the spectrum concentrated (broadband
-  /// share below this) or the ACF persisting. Conflicting evidence (a positive exponent on a
-  /// phase-coherent record such as Rossler's) is "undetermined", with the reasons listed.
-  double periodic_max_broadband = 0.3;
+  /// The 0-1 test's K tends to 0 for regular and to 1 for chaotic (or stochastic) dynamics;
+  /// the midpoint splits them.
+  double zero_one_split = 0.5;
+  /// Determinism: the local-constant predictor's error at most this fraction of the linear
+  /// predictor's (for a linear Gaussian process the linear one is optimal: ratio >= ~1).
+  double max_prediction_ratio = 0.5;
+  /// Regular motion keeps its autocorrelation: late envelope at least this (a tone: ~0.8).
   double periodic_min_late_acf = 0.5;
+  /// Without a 0-1 test, regular also needs a concentrated spectrum (broadband share below).
+  double periodic_max_broadband = 0.3;
+  /// Quasi-periodic: a second spectral line, not a rational multiple p/q (q <= 3) of the
+  /// first, carrying at least this fraction of the first line's power.
+  double second_line_min_power = 0.01;
 };
 
 /// The numbers the verdict reads (computed by analyze_series).
@@ -48,7 +60,21 @@ struct RegimeEvidence {
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;
   double lyapunov_per_s = 0.0, lyapunov_uncertainty_per_s = 0.0;
-  double broadband_share = 0.0, late_acf = 0.0, determinism = 0.0;
+  double broadband_share = 0.0, late_acf = 0.0;
+  double determinism = 0.0;  ///< Cao's max |E2 - 1| (reported)
+  bool zero_one_run = false;
+  std::string zero_one_note;  ///< why not run, when not
+  double zero_one_K = 0.0, zero_one_q25 = 0.0, zero_one_q75 = 0.0;
+  bool prediction_computed = false;
+  double prediction_nonlinear = 0.0, prediction_linear = 0.0;
+  bool surrogate_run = false;
+  std::string surrogate_note;  ///< why not run, when not
+  std::size_t surrogate_count = 0, surrogate_rank = 0;
+  double surrogate_p = 1.0;
+  bool surrogate_rejected = false, surrogate_more_predictable = false;
+  /// Second spectral line (relative power; 0 when none) and its frequency ratio to the first.
+  double second_line_power = 0.0, second_line_ratio = 0.0;
+  bool second_line_incommensurate = false;
 };
 
 struct Verdict {
@@ -59,6 +85,9 @@ struct Verdict {
 };
 
 Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o = {});
+
+/// The rule that combines the criteria, in words (printed with every verdict).
+std::string verdict_rule(const VerdictOptions& o = {});
 
 /// The steady criterion alone: a record damped to a constant has no dynamics to embed, so the
 /// analysis stops before the embedding and the Lyapunov estimators.

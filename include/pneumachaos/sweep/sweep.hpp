@@ -42,8 +42,13 @@ struct RunRecord {
   double broadband = kNaN, late_acf = kNaN;
   std::string regime = "undetermined";
   bool chaotic = false, stick_slip = false;
+  double zero_one_K = kNaN;        ///< the 0-1 test's median K (NaN: not run)
+  double prediction_ratio = kNaN;  ///< local-constant / linear prediction error
 
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
+  /// Fields of an encoded record; part of the journal's header, so a journal written in
+  /// another record format is refused as such.
+  static constexpr std::size_t kFields = 21;
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
   static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
   static std::string csv_header();
@@ -59,8 +64,13 @@ struct PointSummary {
   std::size_t runs = 0, failed = 0;
   double stick_slip_incidence = 0.0;  ///< fraction of the successful runs
   double chaos_incidence = 0.0;
+  /// Fraction of the successful runs with each regime, in the order of sweep_regime_names().
+  std::vector<double> regime_incidence;
   double mean_v = kNaN, mean_lambda = kNaN;
 };
+
+/// Every regime name a run can carry (columns of points.csv).
+const std::vector<std::string>& sweep_regime_names();
 
 struct SweepSummary {
   std::size_t runs = 0, failed = 0, points = 0;

@@ -1,0 +1,21 @@
+#pragma once
+// The two strongest lines of a record's spectrum, located finely enough to tell a torus (two
+// incommensurate frequencies) from a periodic orbit (harmonics, or the subharmonics of a
+// period doubling): one Hann-windowed periodogram of the whole record, peaks refined by
+// parabolic interpolation of the log power (accurate to a small fraction of a bin).
+
+#include <span>
+
+namespace pneumachaos {
+
+struct SpectralLines {
+  double first_frequency = 0.0;   ///< cycles per sample
+  double second_frequency = 0.0;  ///< 0 when there is no second local maximum
+  double second_power = 0.0;      ///< second line's power / first line's power
+  /// No p/q with q <= 3 matches second/first within the frequency resolution.
+  bool incommensurate = false;
+};
+
+SpectralLines spectral_lines(std::span<const double> x);
+
+}  // namespace pneumachaos

@@ -1,0 +1,133 @@
+#include "pneumachaos/analysis/zero_one_test.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "pneumachaos/analysis/fft.hpp"
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const double n = static_cast<double>(a.size());
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ma += a[i];
+    mb += b[i];
+  }
+  ma /= n;
+  mb /= n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+// Mean square displacement of the walk z = p + i q for n = 1 .. ncut, averaged over the
+// first S = N - ncut starts: |z_{j+n} - z_j|^2 = |z_{j+n}|^2 + |z_j|^2 - 2 Re conj(z_j) z_{j+n};
+// the cross term for every n at once by one correlation through the FFT (N log N instead of
+// N ncut per frequency; no wrap-around, since j + n < N <= the transform length).
+std::vector<double> mean_square_displacement(const std::vector<std::complex<double>>& z,
+                                             std::size_t ncut, const DftPlan& plan) {
+  const std::size_t N = z.size(), S = N - ncut, L = plan.size();
+  std::vector<std::complex<double>> a(L, 0.0), b(L, 0.0), A, B;
+  for (std::size_t j = 0; j < N; ++j) {
+    b[j] = z[j];
+    if (j < S) a[j] = z[j];
+  }
+  plan.transform(a, A, false);
+  plan.transform(b, B, false);
+  for (std::size_t k = 0; k < L; ++k) A[k] = std::conj(A[k]) * B[k];
+  plan.transform(A, B, true);
+  std::vector<double> prefix(N + 1, 0.0);  // prefix sums of |z_j|^2
+  for (std::size_t j = 0; j < N; ++j) prefix[j + 1] = prefix[j] + std::norm(z[j]);
+  std::vector<double> M(ncut);
+  for (std::size_t n = 1; n <= ncut; ++n) {
+    const double cross = B[n].real() / static_cast<double>(L);
+    M[n - 1] = (prefix[S + n] - prefix[n] + prefix[S] - 2.0 * cross) / static_cast<double>(S);
+  }
+  return M;
+}
+
+// K_c for one frequency c: the walk driven by phi, its mean square displacement minus the
+// oscillatory term of the 2009 paper (eq. 3.4: (E phi)^2 (1 - cos nc) / (1 - cos c)),
+// correlated with n.
+double k_of_c(const std::vector<double>& phi, double mean, double c, const DftPlan& plan) {
+  const std::size_t N = phi.size(), ncut = N / 10;
+  std::vector<std::complex<double>> z(N);
+  std::complex<double> walk = 0.0;
+  for (std::size_t j = 0; j < N; ++j) {
+    walk += phi[j] * std::polar(1.0, static_cast<double>(j + 1) * c);
+    z[j] = walk;
+  }
+  const std::vector<double> M = mean_square_displacement(z, ncut, plan);
+  std::vector<double> xi(ncut), D(ncut);
+  for (std::size_t n = 1; n <= ncut; ++n) {
+    const double nd = static_cast<double>(n);
+    xi[n - 1] = nd;
+    D[n - 1] = M[n - 1] - mean * mean * (1.0 - std::cos(nd * c)) / (1.0 - std::cos(c));
+  }
+  return correlation(xi, D);
+}
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double pos = q * static_cast<double>(v.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+}  // namespace
+
+void ZeroOneOptions::validate() const {
+  if (frequencies == 0) throw Error("zero_one.frequencies", "must be at least 1");
+  if (min_points < 20) throw Error("zero_one.min_points", "must be at least 20");
+  if (max_points < min_points) throw Error("zero_one.max_points", "must be >= min_points");
+}
+
+ZeroOneResult zero_one_test(std::span<const double> x, std::size_t step,
+                            const ZeroOneOptions& o) {
+  o.validate();
+  ZeroOneResult r;
+  r.step = std::max<std::size_t>(1, step);
+  std::vector<double> phi;
+  for (std::size_t i = 0; i < x.size() && phi.size() < o.max_points; i += r.step) {
+    phi.push_back(x[i]);
+  }
+  r.points = phi.size();
+  if (r.points < o.min_points) {
+    r.reason = fmt::format("not run: {} points after down-sampling by {}, at least {} needed",
+                           r.points, r.step, o.min_points);
+    return r;
+  }
+  double mean = 0.0;
+  for (double v : phi) mean += v;
+  mean /= static_cast<double>(phi.size());
+  // Our own uniform draw from mt19937_64's 53 top bits: portable between standard libraries.
+  std::mt19937_64 rng(o.seed);
+  std::vector<double> K;
+  const DftPlan plan(fast_fft_size(phi.size()));
+  for (std::size_t k = 0; k < o.frequencies; ++k) {
+    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    const double c = std::numbers::pi / 5.0 + u * (3.0 * std::numbers::pi / 5.0);
+    K.push_back(k_of_c(phi, mean, c, plan));
+  }
+  r.K = quantile(K, 0.5);
+  r.K_q25 = quantile(K, 0.25);
+  r.K_q75 = quantile(K, 0.75);
+  r.run = true;
+  return r;
+}
+
+}  // namespace pneumachaos

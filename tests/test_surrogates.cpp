@@ -1,0 +1,133 @@
+// IAAFT surrogates, the surrogate-data test and the 0-1 test on records whose answer is known
+// from theory: chaotic maps and flows reject the linear-stochastic null, linear Gaussian
+// processes keep it (at the test's 5 % level); K -> 1 for chaos, -> 0 for periodic motion.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/analysis/fft.hpp"
+#include "pneumachaos/analysis/surrogates.hpp"
+#include "pneumachaos/analysis/zero_one_test.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/analysis_output.hpp"
+#include "validation_corpus.hpp"
+
+namespace pneumachaos {
+namespace {
+
+using namespace pneumachaos::testing;
+
+double spectral_mismatch(std::span<const double> a, std::span<const double> b) {
+  const auto A = forward_dft(a, a.size()), B = forward_dft(b, b.size());
+  double d = 0.0, t = 0.0;
+  for (std::size_t k = 0; k < A.size(); ++k) {
+    d += std::pow(std::abs(A[k]) - std::abs(B[k]), 2);
+    t += std::norm(A[k]);
+  }
+  return std::sqrt(d / t);
+}
+
+TEST(Surrogates, IaaftKeepsTheValuesAndTheSpectrumAndFollowsItsSeed) {
+  const auto x = lorenz_x(4000);  // 4000 = 2^5 5^3: a fast transform length
+  const auto s = iaaft_surrogate(x, 5);
+  auto xs = x, ss = s;
+  std::sort(xs.begin(), xs.end());
+  std::sort(ss.begin(), ss.end());
+  EXPECT_EQ(xs, ss);  // exactly the record's values (the amplitude adjustment)
+  EXPECT_LE(spectral_mismatch(x, s), 1e-2);  // SurrogateOptions::spectral_tolerance
+  EXPECT_NE(s, x);
+  EXPECT_EQ(iaaft_surrogate(x, 5), s);  // deterministic for a seed
+  EXPECT_NE(iaaft_surrogate(x, 6), s);
+}
+
+TEST(Surrogates, ChaosRejectsTheLinearNullAndLinearNoiseKeepsIt) {
+  PredictionOptions p;
+  p.dimension = 2;
+  p.delay = 1;
+  SurrogateOptions o;  // 39 surrogates, two-sided 95 %
+  const SurrogateTest henon = surrogate_test(henon_map(4000), p, o);
+  ASSERT_TRUE(henon.run);
+  EXPECT_TRUE(henon.rejected);
+  EXPECT_TRUE(henon.more_predictable);
+  EXPECT_NEAR(henon.p_value, 0.05, 1e-12);  // 2 / (39 + 1): the smallest two-sided p
+  EXPECT_EQ(henon.surrogate_statistics.size(), 39u);
+
+  p.dimension = 3;
+  p.delay = 17;
+  p.theiler = 34;
+  const SurrogateTest lorenz = surrogate_test(lorenz_x(5000), p, o);
+  EXPECT_TRUE(lorenz.more_predictable);
+  // AR(1) is the null itself: kept at four seeds (each could reject by chance with p = 0.05).
+  int kept = 0;
+  p.dimension = 2;
+  p.delay = 5;
+  p.theiler = 20;
+  for (unsigned seed : {21u, 22u, 23u, 24u}) {
+    kept += surrogate_test(autoregressive(4000, 0.9, 0.0, seed), p, o).rejected ? 0 : 1;
+  }
+  EXPECT_GE(kept, 3);
+}
+
+TEST(Surrogates, ShortRecordsAndZeroCountAreNotRunAndSaySo) {
+  PredictionOptions p;
+  SurrogateOptions o;
+  const SurrogateTest shortr = surrogate_test(henon_map(300), p, o);
+  EXPECT_FALSE(shortr.run);
+  EXPECT_NE(shortr.reason.find("at least 500"), std::string::npos);
+  o.count = 0;
+  EXPECT_FALSE(surrogate_test(henon_map(4000), p, o).run);
+  o.max_iterations = 0;
+  EXPECT_THROW(surrogate_test(henon_map(4000), p, o), Error);
+}
+
+TEST(ZeroOne, ChaosNearOnePeriodicNearZero) {
+  // Gottwald & Melbourne 2004/2009: K -> 1 for the chaotic logistic map, -> 0 for periodic.
+  const ZeroOneResult chaos = zero_one_test(logistic(5000, 3.97), 1);
+  ASSERT_TRUE(chaos.run);
+  EXPECT_GT(chaos.K, 0.9);
+  EXPECT_LE(chaos.K_q25, chaos.K);
+  EXPECT_GE(chaos.K_q75, chaos.K);
+  EXPECT_LT(zero_one_test(logistic(5000, 3.55), 1).K, 0.1);  // period 8
+  EXPECT_EQ(zero_one_test(logistic(5000, 3.97), 1).K, chaos.K);  // seeded
+}
+
+TEST(ZeroOne, OversampledFlowNeedsDownSampling) {
+  // Lorenz at dt = 0.01 moves little per sample: every sample reads regular, every 17th
+  // (the mutual-information delay) reads chaotic.
+  const auto x = lorenz_x(10000);
+  EXPECT_LT(zero_one_test(x, 1).K, 0.5);
+  EXPECT_GT(zero_one_test(x, 17).K, 0.9);
+  const ZeroOneResult few = zero_one_test(lorenz_x(1000), 17);
+  EXPECT_FALSE(few.run);
+  EXPECT_NE(few.reason.find("at least 200"), std::string::npos);
+}
+
+TEST(Evidence, TooShortForTheTestsSaysSoAndDegradesWithoutNaN) {
+  // 1,500 samples of a 10 Hz tone at 1 kHz: the 0-1 test gets 1500 / 25 = 60 points (< 200)
+  // and 39 surrogates are asked for on a record long enough for them (>= 500 samples).
+  AnalysisOptions o;
+  o.surrogates.count = 39;
+  const AnalysisResult r = analyze_series(sine(1500, 10.0, 1000.0, 0.05), 1000.0, o);
+  EXPECT_FALSE(r.zero_one.run);
+  bool said = false;
+  for (const auto& line : r.verdict.evidence) {
+    said = said || line.find("0-1 test: not run") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  // Without the 0-1 test, regular rests on the concentrated spectrum and the persisting ACF.
+  EXPECT_EQ(r.verdict.regime, Regime::kPeriodic);
+  const std::string json = analysis_json(r, "test", "x", "-");
+  EXPECT_EQ(json.find("NaN"), std::string::npos);
+  EXPECT_EQ(json.find("nan"), std::string::npos);
+  EXPECT_NE(json.find("\"zero_one\""), std::string::npos);
+  // 300 samples: too short for the surrogates too, and for a verdict (undetermined).
+  const AnalysisResult tiny = analyze_series(sine(300, 10.0, 1000.0, 0.05), 1000.0, o);
+  EXPECT_FALSE(tiny.surrogate.run);
+  EXPECT_NE(tiny.surrogate.reason.find("at least 500"), std::string::npos);
+  EXPECT_EQ(tiny.verdict.regime, Regime::kUndetermined);
+}
+
+}  // namespace
+}  // namespace pneumachaos
