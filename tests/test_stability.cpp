@@ -149,7 +149,7 @@ TEST(Stability, NegativeStribeckSlopeIsSelfExcitedByBothAnalyses) {
 TEST(Stability, MeterInUsesB1) {
   const Scenario s = scenario({"circuit.kind=meter-in", "friction.model=classic"});
   const Plant plant(s);
-  const StabilityResult r = analyze_stability(plant, {.circuit = CircuitKind::kMeterIn});
+  const StabilityResult r = analyze_stability(plant);
   ASSERT_TRUE(r.has_equilibrium());
   EXPECT_GT(r.paper.b1, 0.0);
   // b m equals k m R T Cd1 Ps / (V10 P10) when the supply is choked (eq. 11 from eq. 10).

@@ -47,7 +47,6 @@ Action add_stability(CLI::App& app) {
       }
       options.equilibrium.position_m = *args->position_mm * 1e-3;
     }
-    options.circuit = scenario.circuit.kind;
     if (!args->map) {
       if (!args->grids.empty()) throw Error("--grid", "needs --map");
       const Plant plant(scenario);

@@ -13,7 +13,7 @@
 
 namespace pneumachaos::friction_law {
 
-/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/architecture.md).
+/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/model.md).
 template <typename T>
 T texture_factor(const FrictionParams& p, const T& position_m) {
   using std::sin;
@@ -23,7 +23,7 @@ T texture_factor(const FrictionParams& p, const T& position_m) {
   return f;
 }
 
-/// Fc with its pressure dependence and texture (docs/architecture.md).
+/// Fc with its pressure dependence and texture (docs/model.md).
 template <typename T>
 T coulomb_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
   return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *

@@ -23,6 +23,7 @@ void set_mode(Mode& m, std::size_t contact, ContactMode c) {
 Plant::Plant(const Scenario& scenario)
     : geometry_(scenario.cylinder),
       load_(scenario.load),
+      circuit_(scenario.circuit.kind),
       ambient_Pa_(scenario.ambient_pressure_Pa),
       supply_Pa_(scenario.supply_pressure_Pa()),
       polytropic_exponent_(scenario.polytropic_exponent),

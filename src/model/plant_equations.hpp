@@ -1,6 +1,6 @@
 #pragma once
 // The Plant's equations, written once on a scalar type T: eqs. (1)-(3) of
-// docs/architecture.md, the friction internal states and the optional second body.
+// docs/model.md, the friction internal states and the optional second body.
 // derivative() instantiates them on double, jacobian() on an automatic-differentiation scalar,
 // and the equilibrium search solves their residual. Private to the model module.
 //
@@ -99,7 +99,7 @@ void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) 
       dxdt[ix] = x[iv];
       dxdt[iv] = (drive_force(contact, x) - friction) / mass;  // eq. (1)
     } else {
-      // Stuck or at the stop: v held at exactly 0 and x frozen (docs/architecture.md).
+      // Stuck or at the stop: v held at exactly 0 and x frozen (docs/model.md "Friction").
       dxdt[ix] = T(0.0);
       dxdt[iv] = T(0.0);
     }

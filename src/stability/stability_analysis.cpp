@@ -21,8 +21,7 @@ const char* verdict_name(StabilityVerdict v) {
   return "?";
 }
 
-PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq,
-                                     CircuitKind circuit) {
+PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) {
   const double k = plant.polytropic_exponent();
   const double RT = plant.RT_J_per_kg();
   const LoadParams& load = plant.load();
@@ -45,7 +44,7 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq,
   c.b = k * plant.A1() * v0 / V10;
   c.b1 = k * m * RT * c.Cd1_kg_per_sPa / (V10 * eq.P10_Pa) * plant.supply_pressure_Pa() + B;
   c.b2 = k * plant.A1() * plant.A1() * eq.P10_Pa / V10 + c.b * B;
-  const bool meter_out = circuit == CircuitKind::kMeterOut;
+  const bool meter_out = plant.circuit() == CircuitKind::kMeterOut;
   const double c1 = meter_out ? c.a1 : c.b1;
   const double c2 = meter_out ? c.a2 : c.b2;
   c.zeta = c2 > 0.0 ? c1 / (2.0 * std::sqrt(m * c2)) : std::numeric_limits<double>::quiet_NaN();
@@ -61,7 +60,7 @@ StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& op
     return r;
   }
   r.equilibrium = eqs.primary();
-  r.paper = paper_coefficients(plant, r.equilibrium, options.circuit);
+  r.paper = paper_coefficients(plant, r.equilibrium);
   const Eigen::MatrixXd J = jacobian(plant, r.equilibrium);
   r.state_names = reduced_state(plant, r.equilibrium).names;
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(J, /*computeEigenvectors=*/false);

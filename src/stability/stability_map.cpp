@@ -20,10 +20,8 @@ StabilityMap stability_map(const Scenario& base, const std::vector<GridAxis>& ax
     for (std::size_t i = 0; i < axes.size(); ++i)
       point.coordinates.push_back(axes[i].values[index[i]]);
     try {
-      const Scenario scenario = scenario_at(base, axes, index);
-      StabilityOptions at_point = options;
-      at_point.circuit = scenario.circuit.kind;
-      point.result = analyze_stability(Plant(scenario), at_point);
+      const Plant plant(scenario_at(base, axes, index));
+      point.result = analyze_stability(plant, options);
     } catch (const Error& e) {
       point.error = e.what();
     } catch (const std::exception& e) {

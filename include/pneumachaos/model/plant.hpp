@@ -62,7 +62,7 @@ class Plant final : public HybridSystem {
   [[nodiscard]] std::vector<double> state_scales() const;
 
   // What the plant integrates, and nothing else of the Scenario it was built from (the run's
-  // settings, the circuit's name and the variation stay with the caller).
+  // settings and the variation stay with the caller).
   [[nodiscard]] const StateLayout& layout() const { return layout_; }
   [[nodiscard]] double ambient_pressure_Pa() const { return ambient_Pa_; }
   [[nodiscard]] double supply_pressure_Pa() const { return supply_Pa_; }  ///< absolute
@@ -71,6 +71,8 @@ class Plant final : public HybridSystem {
   [[nodiscard]] double RT_J_per_kg() const { return RT_; }
   [[nodiscard]] const CylinderGeometry& geometry() const { return geometry_; }
   [[nodiscard]] const LoadParams& load() const { return load_; }
+  /// Meter-out or meter-in: which of the two valves is the speed controller.
+  [[nodiscard]] CircuitKind circuit() const { return circuit_; }
   [[nodiscard]] const FrictionModel& seal_friction() const { return *seal_; }
   /// The load guide's friction model; nullptr for rigid coupling.
   [[nodiscard]] const FrictionModel* guide_friction() const { return guide_.get(); }
@@ -134,6 +136,7 @@ class Plant final : public HybridSystem {
 
   CylinderGeometry geometry_;
   LoadParams load_;
+  CircuitKind circuit_ = CircuitKind::kMeterOut;
   double ambient_Pa_ = 0.0;
   double supply_Pa_ = 0.0;
   double polytropic_exponent_ = 0.0;

@@ -25,15 +25,11 @@ struct PaperCoefficients {
   StabilityVerdict verdict = StabilityVerdict::kDamped;  ///< sign of a1 (meter-out) or b1 (meter-in)
 };
 
-/// `circuit` picks the pair (a1, a2 or b1, b2) that decides zeta and the verdict.
-PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq,
-                                     CircuitKind circuit);
+/// The plant's circuit (meter-out or meter-in) picks the pair that decides zeta and the verdict.
+PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq);
 
 struct StabilityOptions {
   EquilibriumOptions equilibrium;
-  /// The scenario's circuit (circuit.kind): which of the paper's analyses gives its verdict.
-  /// The Plant only knows the two valve areas, not which one is the speed controller.
-  CircuitKind circuit = CircuitKind::kMeterOut;
 };
 
 struct StabilityResult {
