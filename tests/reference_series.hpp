@@ -1,5 +1,5 @@
 #pragma once
-// Series with known largest Lyapunov exponents (ANALYSIS.md "Validation references"), made by
+// Series with known largest Lyapunov exponents (docs/analysis.md, "Measured"), made by
 // the tests themselves: the x coordinate only, transients discarded.
 
 #include <array>

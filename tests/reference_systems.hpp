@@ -1,5 +1,5 @@
 #pragma once
-// Reference hybrid systems with known solutions, shared by the tests (ARCHITECTURE.md habit 8).
+// Reference hybrid systems with known solutions, shared by the tests (see docs/architecture.md).
 
 #include <cmath>
 #include <numbers>

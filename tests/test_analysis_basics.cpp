@@ -125,7 +125,7 @@ TEST(EmbeddingParameters, TextbookDelaysAndDimensions) {
 
 TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
   // 10 Hz at 1 kHz: a quarter period is 25 samples (a 16-bin equal-width AMI puts the
-  // minimum at ~5, ANALYSIS.md).
+  // minimum at ~5, docs/analysis.md).
   const auto x = sine(10000, 10.0, 1000.0, 0.05);
   const DelayChoice d = choose_delay(x);
   EXPECT_GE(d.delay, 22u);

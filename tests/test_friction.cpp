@@ -1,4 +1,4 @@
-// Friction models (MODEL.md "Friction").
+// Friction models (docs/model.md, "Friction").
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,5 +1,5 @@
 // Largest Lyapunov exponents from 1e4 samples of one coordinate, with DEFAULT automatic
-// parameters (ANALYSIS.md "Validation references").
+// parameters (docs/analysis.md, "Measured").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,7 +59,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Divergence, ContinuousTimeAlignmentRemovesTheFlowBias) {
-  // Without alignment the Rossler estimate falls 13-18 % low, as in the peers ANALYSIS.md lists.
+  // Without alignment the Rossler estimate falls 13-18 % low, as in the peers docs/analysis.md lists.
   const auto x = rossler_x(10000);
   DivergenceOptions o = automatic(x);
   o.alignment = DivergenceOptions::Alignment::kOff;
@@ -97,7 +97,7 @@ WolfOptions wolf_automatic(const std::vector<double>& x) {
 
 class WolfTest : public ::testing::TestWithParam<Reference> {};
 
-// ANALYSIS.md asks 15 % for Wolf. Measured on these records: logistic 0 %, Henon -7.6 %,
+// Wolf is asked to be within 15 % (docs/analysis.md). Measured on these records: logistic 0 %, Henon -7.6 %,
 // Lorenz -6.2 %, Rossler -12.7 % (docs/analysis.md).
 TEST_P(WolfTest, WithinFifteenPercentOfTheReference) {
   const Reference& ref = GetParam();

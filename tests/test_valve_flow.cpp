@@ -1,4 +1,4 @@
-// Valve flow laws (MODEL.md "Valve flow through an effective sectional area S").
+// Valve flow laws (docs/model.md, "Valves").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,7 +25,7 @@ TEST(ValveFlow, ChokedFlowMatchesClosedForm) {
 }
 
 TEST(ValveFlow, MeterOutSpeedConstantIs199MetresPerSecond) {
-  // MODEL.md: choked meter-out speed ~ 199 m/s * S2/A2, i.e. W R T / P = S * 198.6 m/s.
+  // docs/model.md, "Defaults": choked meter-out speed ~ 199 m/s * S2/A2, i.e. W R T / P = S * 198.6 m/s.
   const GasConstants gas;
   EXPECT_NEAR(choked_flux_factor(gas, kT) * 287.0 * kT, 198.6, 0.1);
 }

@@ -169,7 +169,7 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       out.kind = EventKind::kStopRelease;
       break;
     case EventType::kStopHit:
-      // A hard stop: no penetration, the velocity is set to zero (MODEL.md).
+      // A hard stop: no penetration, the velocity is set to zero (docs/model.md, "Start and end of a run").
       x[ix] = 0.0;
       x[iv] = 0.0;
       set_mode(mode, c, rest_mode(c, x, true));

@@ -7,7 +7,7 @@
 namespace pneumachaos {
 namespace {
 
-// Default valve areas of the two circuits (MODEL.md): the meter-out pair is the paper's chaotic
+// Default valve areas of the two circuits (docs/model.md, "Valves"): the meter-out pair is the paper's chaotic
 // example (Fig. 7, S1 = 2.70 mm^2, S2 = 0.35 mm^2); meter-in throttles the supply with the
 // same 0.35 mm^2 and exhausts freely through 20 mm^2 (a fully open 1/4" valve).
 constexpr double kMeterOutS1 = 2.70e-6;
@@ -70,7 +70,7 @@ void Scenario::validate() const {
 
 Scenario default_scenario() {
   Scenario s;
-  // Seal on the piston + rod: LuGre with a wide Stribeck drop (MODEL.md "Leads"). Fc and Fs
+  // Seal on the piston + rod: LuGre with a wide Stribeck drop (docs/virtual_rig.md). Fc and Fs
   // lie in the 15-30 N / 30-50 N measured for 32-40 mm standard seals; the drop over
   // ~45 mm/s puts the negative slope of the paper's Fig. 3 at its operating speeds.
   s.friction.kind = FrictionKind::kLuGre;

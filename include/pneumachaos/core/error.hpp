@@ -1,5 +1,5 @@
 #pragma once
-// The one error family for bad user input (ARCHITECTURE.md, habit 4).
+// The one error family for bad user input (docs/architecture.md).
 
 #include <stdexcept>
 #include <string>

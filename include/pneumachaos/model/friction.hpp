@@ -1,5 +1,5 @@
 #pragma once
-// Friction models behind one interface (MODEL.md "Friction").
+// Friction models behind one interface (docs/model.md, "Friction").
 
 #include <memory>
 #include <span>
@@ -29,10 +29,10 @@ struct FrictionParams {
   double stribeck_exponent = 2.0;           ///< delta in exp(-(|v|/vs)^delta)
   double sigma0_N_per_m = 1.0e5;            ///< LuGre bristle stiffness
   double sigma1_Ns_per_m = 300.0;           ///< LuGre bristle damping
-  /// Pressure dependence (MODEL.md item 4): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
+  /// Pressure dependence (docs/model.md, "Friction"): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
   double coulomb_gain_N_per_Pa = 0.0;
   double static_gain_N_per_Pa = 0.0;
-  /// Position-dependent texture (MODEL.md item 5); empty: uniform bore.
+  /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
   std::vector<TextureMode> texture;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The pneumatic cylinder with its valves, seal friction and load, as a hybrid system
-// (MODEL.md equations (1)-(3)). Immutable: parameters and the derivative rule only; time,
-// state and mode belong to the integrator (ARCHITECTURE.md habit 2).
+// (docs/model.md, equations (1)-(3)). Immutable: parameters and the derivative rule only; time,
+// state and mode belong to the integrator (docs/architecture.md).
 
 #include <array>
 #include <memory>
@@ -53,7 +53,7 @@ class Plant final : public HybridSystem {
   bool jacobian(const Mode& mode, std::span<const double> x, double t, std::span<double> dfdx,
                 std::span<double> dfdt) const override;
 
-  /// MODEL.md start of a run: chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
+  /// The start of a run (docs/model.md): chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
   [[nodiscard]] std::vector<double> initial_state() const;
   [[nodiscard]] PlantOutputs outputs(const Mode& mode, std::span<const double> x) const;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Every parameter of a run, in SI units with absolute pressures (MODEL.md). The scenario
+// Every parameter of a run, in SI units with absolute pressures (docs/model.md). The scenario
 // keys users write (TOML, --set) speak engineering units; scenario_keys.hpp converts once.
 
 #include <optional>
@@ -41,7 +41,7 @@ struct LoadParams {
       FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0, 1.0e5, 50.0, 0.0, 0.0, {}};
 };
 
-/// Run-to-run and seal-to-seal variation (MODEL.md item 5): what makes repeated runs of a
+/// Run-to-run and seal-to-seal variation (docs/model.md, "Friction"; docs/sweep.md): what makes repeated runs of a
 /// virtual rig differ as the paper's five measurements per point did. All zero: no variation.
 struct VariationParams {
   double friction_rel_sd = 0.0;  ///< relative sd of Fc, Fs, B, vs, sigma0, sigma1 per run

@@ -1,6 +1,6 @@
 #pragma once
 // Mass flow of air through a restriction sized by its effective sectional area S
-// (JIS B 8390), MODEL.md "Valve flow through an effective sectional area S".
+// (JIS B 8390), docs/model.md, "Valves".
 
 #include <cmath>
 

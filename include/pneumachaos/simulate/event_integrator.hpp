@@ -48,7 +48,7 @@ struct EventRecord {
   EventKind kind = EventKind::kSlip;
 };
 
-/// What happened in a run (ARCHITECTURE.md habit 3: options in, summary out).
+/// What happened in a run (docs/architecture.md: options in, summary out).
 struct IntegrationSummary {
   Termination termination = Termination::kDurationReached;
   std::string message;

@@ -30,7 +30,7 @@ struct SimulationResult {
   IntegrationSummary summary;
 };
 
-/// Simulates from the MODEL.md start of a run (directional valve switching at t = 0).
+/// Simulates from the start of a run of docs/model.md (directional valve switching at t = 0).
 SimulationResult simulate(const Plant& plant, const SimulationOptions& options);
 
 /// Simulates from a given state (e.g. near an equilibrium).
