@@ -2,13 +2,58 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+#include <iostream>
 #include <optional>
 
 #include "commands.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/csv_writer.hpp"
 #include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos::cli {
+namespace {
+
+std::size_t replay_index(const std::string& text, std::size_t pos, std::size_t end) {
+  std::size_t v = 0;
+  const auto [p, ec] = std::from_chars(text.data() + pos, text.data() + end, v);
+  if (ec != std::errc() || p != text.data() + end || pos == end) {
+    throw Error("--replay", fmt::format("expected POINT:REPEAT (whole numbers), got \"{}\"", text));
+  }
+  return v;
+}
+
+// One run of the sweep again, bit for bit: the record the analysis judged (the simulated
+// channels plus v_measured, the velocity with the transducer noise) and its runs.csv line.
+int replay(const SweepSpec& spec, const std::string& which, const std::string& path) {
+  spec.validate();
+  const auto colon = which.find(':');
+  if (colon == std::string::npos) replay_index(which, 0, 0);  // throws the usage message
+  const std::size_t point = replay_index(which, 0, colon);
+  const std::size_t repeat = replay_index(which, colon + 1, which.size());
+  if (point >= spec.points() || repeat >= spec.repeats) {
+    throw Error("--replay", fmt::format("run {}:{} is outside the sweep ({} points x {} repeats)",
+                                        point, repeat, spec.points(), spec.repeats));
+  }
+  SweepRun run = simulate_run(spec, point, repeat);
+  const RunRecord r = judge_run(spec, run);
+  fmt::print(stderr, "{}\n{}\n", RunRecord::csv_header(), r.encode());
+  if (!run.sim.summary.ok()) return kExitRunFailed;
+  TimeSeries& series = run.sim.series;
+  series.add_channel("v_measured", "m/s", std::move(run.measured_v));
+  if (path.empty()) {
+    write_csv(std::cout, series);
+    return kExitOk;
+  }
+  AtomicFile file(path);
+  write_csv(file.stream(), series);
+  file.commit();
+  return kExitOk;
+}
+
+}  // namespace
 
 Action add_sweep(CLI::App& app) {
   struct Args {
@@ -20,6 +65,8 @@ Action add_sweep(CLI::App& app) {
     std::string out;
     bool resume = false;
     bool wolf = false;
+    std::string replay;
+    std::string record;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -35,9 +82,14 @@ Action add_sweep(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "seed of the run-to-run variation (default 1)");
   cmd->add_option("--threads", args->threads, "worker threads (default 0: all cores)")
       ->check(CLI::Range(0, 4096));
-  cmd->add_option("--out", args->out, "directory for the journal and the results")->required();
+  cmd->add_option("--out", args->out, "directory for the journal and the results");
   cmd->add_flag("--resume", args->resume, "finish an interrupted sweep in --out");
   cmd->add_flag("--wolf", args->wolf, "also run Wolf's estimator on every record (slower)");
+  cmd->add_option("--replay", args->replay,
+                  "POINT:REPEAT: run only that run of this sweep again (same grid, repeats and "
+                  "seed) and write its record; its runs.csv line goes to standard error");
+  cmd->add_option("-o,--record", args->record,
+                  "with --replay: CSV file for the record (default: standard output)");
   return [args]() {
     SweepSpec spec;
     spec.base = build_scenario(args->scenario.file, args->scenario.sets);
@@ -51,6 +103,8 @@ Action add_sweep(CLI::App& app) {
     spec.repeats = args->repeats.value_or(file.repeats.value_or(5));
     spec.seed = args->seed.value_or(file.seed.value_or(1));
     spec.wolf = args->wolf;
+    if (!args->replay.empty()) return replay(spec, args->replay, args->record);
+    if (!args->record.empty()) throw Error("--record", "needs --replay");
     SweepOptions options;
     options.out_dir = args->out;
     options.resume = args->resume;

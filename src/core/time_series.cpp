@@ -23,6 +23,17 @@ std::size_t TimeSeries::add_channel(std::string name, std::string unit) {
   return channels_.size() - 1;
 }
 
+std::size_t TimeSeries::add_channel(std::string name, std::string unit,
+                                    std::vector<double> values) {
+  if (has_channel(name)) throw Error("channel " + name, "a channel of that name exists already");
+  if (!channels_.empty() && values.size() != size()) {
+    throw Error("channel " + name, fmt::format("{} values for a series of {} samples",
+                                               values.size(), size()));
+  }
+  channels_.push_back({std::move(name), std::move(unit), std::move(values)});
+  return channels_.size() - 1;
+}
+
 void TimeSeries::append(std::span<const double> row) {
   if (row.size() != channels_.size()) {
     throw Error("TimeSeries::append",

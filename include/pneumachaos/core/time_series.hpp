@@ -23,6 +23,8 @@ class TimeSeries {
 
   /// Adds an empty channel; throws Error if the name already exists.
   std::size_t add_channel(std::string name, std::string unit);
+  /// Adds a channel with its values, one per existing sample (any count for the first one).
+  std::size_t add_channel(std::string name, std::string unit, std::vector<double> values);
   /// Appends one sample row: one value per channel, in channel order.
   void append(std::span<const double> row);
 

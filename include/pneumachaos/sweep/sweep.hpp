@@ -10,6 +10,7 @@
 
 #include "pneumachaos/model/parameter_grid.hpp"
 #include "pneumachaos/model/scenario.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos {
 
@@ -57,6 +58,21 @@ struct RunRecord {
 /// Simulates and analyses run `repeat` of grid point `point`. Never throws for a bad point or
 /// a failed run: that is a record with ok = false and the reason.
 RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat);
+
+/// One run as the sweep sees it: the point's scenario with the run's seeded variation, its
+/// simulation, and the velocity the analysis judges (with the seeded transducer noise).
+/// Throws Error for a point whose parameters are invalid.
+struct SweepRun {
+  std::size_t point = 0, repeat = 0;
+  std::uint64_t seed = 0;
+  Scenario scenario;
+  SimulationResult sim;
+  std::vector<double> measured_v;  ///< [m/s]; empty when the simulation failed
+};
+SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repeat);
+
+/// The record of a simulated run: what run_one stores for it.
+RunRecord judge_run(const SweepSpec& spec, const SweepRun& run);
 
 struct PointSummary {
   std::size_t point = 0;
