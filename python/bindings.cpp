@@ -77,13 +77,13 @@ py::dict simulate_py(const Scenario& scenario) {
   py::dict channels, units;
   channels["t"] = to_numpy(std::move(t));
   units["t"] = "s";
-  for (auto& c : r.series.channels()) {
+  out["rate_Hz"] = r.series.rate_Hz();
+  for (Channel& c : std::move(r.series).take_channels()) {
     units[py::str(c.name)] = c.unit;
-    channels[py::str(c.name)] = copy_to_numpy(c.values);
+    channels[py::str(c.name)] = to_numpy(std::move(c.values));
   }
   out["channels"] = channels;
   out["units"] = units;
-  out["rate_Hz"] = r.series.rate_Hz();
   return out;
 }
 

@@ -38,6 +38,9 @@ class TimeSeries {
   /// The channel with this name; throws Error naming the known channels if absent.
   [[nodiscard]] const Channel& channel(const std::string& name) const;
   [[nodiscard]] bool has_channel(const std::string& name) const noexcept;
+  /// Moves the channels out (e.g. to hand them to numpy without a copy); the series is left
+  /// without channels.
+  [[nodiscard]] std::vector<Channel> take_channels() && { return std::move(channels_); }
 
  private:
   double rate_Hz_;
