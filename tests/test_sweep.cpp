@@ -190,13 +190,19 @@ std::string resume_error(const SweepSpec& spec, const std::string& dir) {
   return "no error";
 }
 
-TEST(Sweep, ARunRecordedTwiceIsRefusedAsTwoWriters) {
-  const SweepSpec spec = small_spec();
-  const std::string dir = temp_dir("twice");
+// A finished small sweep in a fresh directory; returns the directory.
+std::string finished_sweep(const SweepSpec& spec, const std::string& name) {
+  const std::string dir = temp_dir(name);
   SweepOptions o;
   o.progress = false;
   o.out_dir = dir;
   run_sweep(spec, o);
+  return dir;
+}
+
+TEST(Sweep, ARunRecordedTwiceIsRefusedAsTwoWriters) {
+  const SweepSpec spec = small_spec();
+  const std::string dir = finished_sweep(spec, "twice");
   const std::string journal = slurp(dir + "/journal.csv");
   const std::size_t second = journal.find('\n') + 1;
   const std::string first_run = journal.substr(second, journal.find('\n', second) + 1 - second);
@@ -211,11 +217,7 @@ TEST(Sweep, ARunRecordedTwiceIsRefusedAsTwoWriters) {
 
 TEST(Sweep, AJournalWithoutItsHeaderIsCalledDamagedNotForeign) {
   const SweepSpec spec = small_spec();
-  const std::string dir = temp_dir("headless");
-  SweepOptions o;
-  o.progress = false;
-  o.out_dir = dir;
-  run_sweep(spec, o);
+  const std::string dir = finished_sweep(spec, "headless");
   const std::string journal = slurp(dir + "/journal.csv");
   std::ofstream(dir + "/journal.csv", std::ios::binary) << journal.substr(journal.find('\n') + 1);
   const std::string message = resume_error(spec, dir);

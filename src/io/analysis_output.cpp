@@ -8,17 +8,14 @@
 #include <numbers>
 
 #include "pneumachaos/core/error.hpp"
+#include "json_quantity.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 
 namespace pneumachaos {
 namespace {
 
-nlohmann::json number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-nlohmann::json quantity(double v, const std::string& unit) {
-  return {{"value", number(v)}, {"unit", unit}};
-}
+nlohmann::json number(double v) { return json_number(v); }
+nlohmann::json quantity(double v, const std::string& unit) { return json_quantity(v, unit); }
 double bits(double per_s) { return per_s / std::numbers::ln2; }
 
 // The 0-1 test and the surrogate test: when not run, "run": false and the reason; numbers
