@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string fingerprint = "0123456789abcdef";
   std::string text(reinterpret_cast<const char*>(data), size);
   if (size > 0 && (data[0] & 1) != 0) {
-    text = "# pneumachaos sweep journal, spec " + fingerprint + "\n" + text.substr(1);
+    text = pneumachaos::detail::journal_header(fingerprint) + "\n" + text.substr(1);
   }
   {
     std::ofstream out(scratch_path(), std::ios::binary | std::ios::trunc);

@@ -3,12 +3,14 @@
 # prints the number of executions. Exits non-zero on a crash, a sanitizer report or a leak
 # (libFuzzer writes the offending input as crash-*/leak-* in the working directory).
 set -euo pipefail
-harness=$1 seeds=$2 corpus=$3 seconds=$4 max_len=${5:-8192}
+harness=$1 seeds=$2 corpus=$3 seconds=$4 max_len=${5:-8192} seed=${6:-0}
 mkdir -p "$corpus"
 cp -n "$seeds"/* "$corpus"/ 2>/dev/null || true
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-if ! "$harness" -max_total_time="$seconds" -max_len="$max_len" -timeout=20 -rss_limit_mb=4096 \
+# seed 0: libFuzzer picks one (long campaigns); CI passes a fixed seed so that a run is
+# repeatable up to where the time limit cuts it.
+if ! "$harness" -seed="$seed" -max_total_time="$seconds" -max_len="$max_len" -timeout=20 -rss_limit_mb=4096 \
     -print_final_stats=1 "$corpus" >"$log" 2>&1; then
   tail -n 60 "$log"
   exit 1

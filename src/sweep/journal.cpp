@@ -17,15 +17,12 @@ namespace {
 
 constexpr const char* kHeaderStart = "# pneumachaos sweep journal, spec ";
 
-std::string header_of(const std::string& fingerprint) {
-  return fmt::format("{}{}, {} fields", kHeaderStart, fingerprint, RunRecord::kFields);
-}
 
 // The first line must be this sweep's header; a journal of another sweep and a damaged one
 // (no header at all) are refused with different words, since the remedies differ.
 void check_header(const std::string& line, const std::string& path,
                   const std::string& fingerprint) {
-  if (line == header_of(fingerprint)) return;
+  if (line == journal_header(fingerprint)) return;
   if (line.rfind(kHeaderStart, 0) == 0) {
     throw Error(path,
                 "the journal belongs to a different sweep (another scenario, grid, repeats or "
@@ -56,6 +53,10 @@ std::string complete_lines(const std::string& path, bool cut) {
 }
 
 }  // namespace
+
+std::string journal_header(const std::string& fingerprint) {
+  return fmt::format("{}{}, {} fields", kHeaderStart, fingerprint, RunRecord::kFields);
+}
 
 void JournalReader::read(const std::string& path, bool cut) {
   std::istringstream lines(complete_lines(path, cut));
@@ -131,7 +132,7 @@ void Journal::open() {
   const bool fresh = ec || size == 0;
   file_ = std::fopen(path_.c_str(), "ab");
   if (file_ == nullptr) throw RunError(path_, "cannot open the journal for writing");
-  if (fresh) write_line(header_of(fingerprint_) + "\n");
+  if (fresh) write_line(journal_header(fingerprint_) + "\n");
 }
 
 Journal::~Journal() {

@@ -11,6 +11,9 @@
 
 namespace pneumachaos::detail {
 
+/// The first line of a journal of the sweep with this fingerprint.
+std::string journal_header(const std::string& fingerprint);
+
 /// Reads journal files of one sweep, refusing a foreign or damaged header and a run recorded
 /// twice (two writers), and naming file:line in every error.
 class JournalReader {
