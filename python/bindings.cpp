@@ -120,7 +120,7 @@ std::string stability_map_csv(const Scenario& scenario, const std::vector<std::s
 
 py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid,
                   std::size_t repeats, std::uint64_t seed, const std::string& out,
-                  std::size_t threads, bool resume) {
+                  std::size_t threads, bool resume, const py::object& progress) {
   SweepSpec spec;
   spec.base = scenario;
   for (const auto& g : grid) spec.axes.push_back(parse_grid_axis(g));
@@ -132,6 +132,18 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   o.threads = threads;
   o.resume = resume;
   o.progress = false;
+  if (!progress.is_none()) {
+    // Called from a worker thread without the GIL: take it for the Python callable; an
+    // exception there must not cross into the runner.
+    o.on_progress = [&progress](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire hold;
+      try {
+        progress(done, total);
+      } catch (py::error_already_set& e) {
+        e.discard_as_unraisable("pneumachaos.sweep progress callback");
+      }
+    };
+  }
   SweepSummary s;
   {
     py::gil_scoped_release release;

@@ -7,6 +7,8 @@ the GIL, so threads of a notebook keep running.
 
 import io
 import json
+import sys
+import time
 
 import numpy as np
 
@@ -156,13 +158,34 @@ def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s
                                                 float(measure_s), float(renormalize_s)))
 
 
-def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False):
+def _print_progress():
+    state = {"last": 0.0}
+
+    def show(done, total):
+        now = time.monotonic()
+        if done == total or now - state["last"] >= 1.0:
+            state["last"] = now
+            end = "\n" if done == total else ""
+            print(f"\rsweep: {done}/{total} runs", end=end, file=sys.stderr, flush=True)
+    return show
+
+
+def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
+          progress=True):
     """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
-    summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv."""
+    summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv.
+    progress: True prints "sweep: done/total runs" at most once a second, False prints
+    nothing, a callable is called as progress(done, total) after every run."""
     if not out:
         raise ValueError("sweep: out: a directory for the results is required")
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
+    if progress is True:
+        progress = _print_progress()
+    elif progress is False:
+        progress = None
+    elif not callable(progress):
+        raise ValueError(f"sweep: progress: expected True, False or a callable, got {progress!r}")
     return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
-                       int(threads), bool(resume))
+                       int(threads), bool(resume), progress)

@@ -113,9 +113,12 @@ def test_model_lyapunov_and_a_small_sweep(tmp_path):
     assert lam["lyapunov"]["renormalizations"] == 50
     assert math.isfinite(lam["lyapunov"]["lambda"]["value"])
     s = pc.Scenario.default().set("run.duration_s", 1.0)
+    calls = []
     summary = pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=2,
-                       out=str(tmp_path / "map"), threads=1)
+                       out=str(tmp_path / "map"), threads=2,
+                       progress=lambda done, total: calls.append((done, total)))
     assert summary["runs"] == 4 and summary["points"] == 2
+    assert sorted(calls) == [(1, 4), (2, 4), (3, 4), (4, 4)]
     assert (tmp_path / "map" / "runs.csv").exists()
     with pytest.raises(ValueError, match="already holds a sweep"):
         pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=2, out=str(tmp_path / "map"))

@@ -148,6 +148,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
       }
       records.push_back(std::move(r));
       progress.update(++finished, pending.size());
+      if (options.on_progress) options.on_progress(spec.runs() - pending.size() + finished, spec.runs());
     }
   };
   std::vector<std::thread> pool;

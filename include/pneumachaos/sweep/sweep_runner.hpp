@@ -3,6 +3,7 @@
 // to a journal and synced to disk; `resume` skips what the journal holds; the result files
 // are written from the journal, sorted, so they do not depend on threads, order or resumes.
 
+#include <functional>
 #include <string>
 
 #include "pneumachaos/sweep/sweep.hpp"
@@ -14,6 +15,10 @@ struct SweepOptions {
   bool resume = false;
   std::size_t threads = 0;  ///< 0: all hardware threads
   bool progress = true;     ///< shown only when standard error is a terminal
+  /// Called after each finished run with (runs done, runs in the sweep), from the worker
+  /// that finished it, one call at a time; for callers that show progress their own way
+  /// (a notebook). It must not throw.
+  std::function<void(std::size_t, std::size_t)> on_progress;
   void validate() const;
 };
 
