@@ -1,6 +1,8 @@
 // Seeded run-to-run variation of the virtual rig.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/variation.hpp"
@@ -33,6 +35,21 @@ TEST(Variation, RunSeedsAreDistinctAcrossPointsAndRepeats) {
   EXPECT_NE(run_seed(1, 0, 1), run_seed(1, 1, 0));
   EXPECT_NE(run_seed(1, 2, 3), run_seed(2, 2, 3));
   EXPECT_EQ(run_seed(5, 2, 3), run_seed(5, 2, 3));
+}
+
+TEST(Variation, SensorNoiseIsSeededAndHasItsStandardDeviation) {
+  const std::vector<double> a = sensor_noise(42, 20000, 0.5e-3);
+  EXPECT_EQ(a, sensor_noise(42, 20000, 0.5e-3));
+  EXPECT_NE(a, sensor_noise(43, 20000, 0.5e-3));
+  double mean = 0.0, square = 0.0;
+  for (double x : a) {
+    mean += x / a.size();
+    square += x * x / a.size();
+  }
+  // 20000 normal draws: the mean's standard error is sd/141, the sd's about sd/200; 5 of
+  // each leaves a false failure a one-in-a-million event.
+  EXPECT_NEAR(mean, 0.0, 5.0 * 0.5e-3 / 141.0);
+  EXPECT_NEAR(std::sqrt(square - mean * mean), 0.5e-3, 5.0 * 0.5e-3 / 200.0);
 }
 
 }  // namespace

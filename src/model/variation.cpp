@@ -1,7 +1,12 @@
 #include "pneumachaos/model/variation.hpp"
 
+#include <boost/random/normal_distribution.hpp>
+#include <boost/random/uniform_real_distribution.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <numbers>
+#include <random>
 
 namespace pneumachaos {
 namespace {
@@ -13,9 +18,10 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
+// std::mt19937_64 is specified to the bit; the distributions come from Boost (portable).
 void vary_friction(FrictionParams& f, const VariationParams& v, std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  boost::random::normal_distribution<double> normal(0.0, 1.0);
+  boost::random::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (v.friction_rel_sd > 0.0) {
     const auto scale = [&](double& p) {
       p *= std::max(0.2, 1.0 + v.friction_rel_sd * normal(rng));
@@ -52,8 +58,12 @@ Scenario vary(const Scenario& base, std::uint64_t seed) {
   return s;
 }
 
-std::mt19937_64 noise_stream(std::uint64_t seed) {
-  return std::mt19937_64(splitmix64(seed ^ 0x5eed0002ULL));
+std::vector<double> sensor_noise(std::uint64_t seed, std::size_t n, double sd) {
+  std::mt19937_64 rng(splitmix64(seed ^ 0x5eed0002ULL));
+  boost::random::normal_distribution<double> noise(0.0, sd);
+  std::vector<double> out(n);
+  for (double& x : out) x = noise(rng);
+  return out;
 }
 
 }  // namespace pneumachaos

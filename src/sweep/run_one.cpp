@@ -1,5 +1,4 @@
 #include <cmath>
-#include <random>
 
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
@@ -15,10 +14,10 @@ namespace {
 // a measured record (no peeking at the model's state).
 std::vector<double> measured_velocity(const SweepRun& run) {
   std::vector<double> v = run.sim.series.channel("v").values;
-  if (run.scenario.variation.sensor_noise_m_per_s > 0.0) {
-    auto rng = noise_stream(run.seed);
-    std::normal_distribution<double> noise(0.0, run.scenario.variation.sensor_noise_m_per_s);
-    for (double& x : v) x += noise(rng);
+  const double sd = run.scenario.variation.sensor_noise_m_per_s;
+  if (sd > 0.0) {
+    const std::vector<double> noise = sensor_noise(run.seed, v.size(), sd);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] += noise[i];
   }
   return v;
 }

@@ -2,8 +2,9 @@
 // Seeded run-to-run variation: every random stream is derived from (seed, point, repeat), so a
 // run's draw does not depend on which thread or rank computes it, or in which order.
 
+#include <cstddef>
 #include <cstdint>
-#include <random>
+#include <vector>
 
 #include "pneumachaos/model/scenario.hpp"
 
@@ -19,7 +20,9 @@ std::uint64_t run_seed(std::uint64_t seed, std::uint64_t point, std::uint64_t re
 /// scenario comes back unchanged.
 Scenario vary(const Scenario& base, std::uint64_t seed);
 
-/// The generator the run's sensor noise is drawn from (a stream apart from vary()'s).
-std::mt19937_64 noise_stream(std::uint64_t seed);
+/// The run's sensor noise: n draws of N(0, sd^2) from a stream apart from vary()'s. Boost's
+/// distributions, unlike the standard library's, give the same numbers with every compiler
+/// and standard library, so a map is the same on every machine.
+std::vector<double> sensor_noise(std::uint64_t seed, std::size_t n, double sd);
 
 }  // namespace pneumachaos
