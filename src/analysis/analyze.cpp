@@ -125,7 +125,9 @@ void AnalysisOptions::validate() const {
   surrogates.validate();
 }
 
-AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const AnalysisOptions& o) {
+namespace {
+
+void check_record(std::span<const double> x, double rate_Hz) {
   constexpr std::size_t kMinSamples = 200;
   if (x.size() < kMinSamples) {
     throw Error("analyze", fmt::format("{} samples is too short to analyse: at least {} are needed",
@@ -137,18 +139,20 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   if (!(std::isfinite(rate_Hz) && rate_Hz > 0.0)) {
     throw Error("analyze", fmt::format("the sample rate must be positive, got {}", rate_Hz));
   }
-  o.validate();
-  AnalysisResult r;
+}
+
+// Mean, spread, range and rests: the evidence every record gets, constant or not.
+void describe_record(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
   r.samples = x.size();
-  r.rate_Hz = rate_Hz;
   r.mean = mean_of(x);
   r.standard_deviation = standard_deviation(x);
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const double max_abs = std::max(std::abs(*lo), std::abs(*hi));
   if (!std::isfinite(r.standard_deviation)) {
     // Finite samples whose squares overflow: every index would be NaN or "constant".
     throw Error("analyze", fmt::format("values up to {:g} are too large to analyse in double "
                                        "precision; rescale the record (e.g. another unit)",
-                                       std::max(std::abs(*lo), std::abs(*hi))));
+                                       max_abs));
   }
   RegimeEvidence& e = r.evidence;
   e.samples = x.size();
@@ -157,14 +161,56 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   const std::span<const double> last = x.subspan(x.size() / 2);
   e.last_half_mean = mean_of(last);
   e.last_half_std = standard_deviation(last);
-  const double max_abs = std::max(std::abs(*lo), std::abs(*hi));
   rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
+}
+
+// Delay (mutual information), Theiler window, dimension (Cao), unless given.
+void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
+                      AnalysisResult& r) {
+  r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
+  const std::size_t tau = r.delay.delay;
+  const std::size_t zero_lag =
+      r.acf.first_zero_s > 0 ? static_cast<std::size_t>(std::lround(r.acf.first_zero_s * rate_Hz))
+                             : 1;
+  r.theiler = o.theiler > 0 || o.theiler_given ? o.theiler : std::max(tau, zero_lag);
+  r.dimension =
+      o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
+}
+
+void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
+                   AnalysisResult& r) {
+  DivergenceOptions d;
+  d.dimension = r.dimension.dimension;
+  d.delay = r.delay.delay;
+  d.theiler = r.theiler;
+  d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  r.divergence = divergence_exponent(x, rate_Hz, d);
+  r.divergence_status =
+      r.divergence.found_linear_region
+          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
+                        r.divergence.fit_last)
+          : "no rising linear region: no exponential divergence, or the record is too short";
+  if (o.wolf) run_wolf(x, rate_Hz, d, r);
+  RegimeEvidence& e = r.evidence;
+  e.lyapunov_found = r.divergence.found_linear_region;
+  e.lyapunov_per_s = r.divergence.lambda_per_s;
+  e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
+}
+
+}  // namespace
+
+AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const AnalysisOptions& o) {
+  check_record(x, rate_Hz);
+  o.validate();
+  AnalysisResult r;
+  r.rate_Hz = rate_Hz;
+  describe_record(x, o, r);
+  RegimeEvidence& e = r.evidence;
   if (!(r.standard_deviation > 0.0)) {
     // A constant record: steady by definition; no index is defined.
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
-
   r.period_samples = mean_maxima_spacing(x);
   r.spectrum = welch_spectrum(x, rate_Hz, o.spectrum);
   r.acf = autocorrelation(x, rate_Hz);
@@ -175,34 +221,11 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
-  r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
-  const std::size_t tau = r.delay.delay;
-  const std::size_t zero_lag =
-      r.acf.first_zero_s > 0 ? static_cast<std::size_t>(std::lround(r.acf.first_zero_s * rate_Hz))
-                             : 1;
-  r.theiler = o.theiler > 0 || o.theiler_given ? o.theiler : std::max(tau, zero_lag);
-  r.dimension =
-      o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
-
-  DivergenceOptions d;
-  d.dimension = r.dimension.dimension;
-  d.delay = tau;
-  d.theiler = r.theiler;
-  d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
-  r.divergence = divergence_exponent(x, rate_Hz, d);
-  r.divergence_status =
-      r.divergence.found_linear_region
-          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
-                        r.divergence.fit_last)
-          : "no rising linear region: no exponential divergence, or the record is too short";
-  if (o.wolf) run_wolf(x, rate_Hz, d, r);
-  r.poincare = poincare_section(x, tau, rate_Hz);
+  run_exponents(x, rate_Hz, o, r);
+  r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
-
-  e.lyapunov_found = r.divergence.found_linear_region;
-  e.lyapunov_per_s = r.divergence.lambda_per_s;
-  e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
   note_lines(x, r);
   r.verdict = decide_regime(e, o.verdict);

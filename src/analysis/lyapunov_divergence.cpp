@@ -20,64 +20,44 @@ void DivergenceOptions::validate(std::size_t n) const {
   if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
 }
 
-DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
-                                     const DivergenceOptions& o) {
-  o.validate(x.size());
-  DivergenceResult r;
-  r.aligned = o.alignment == DivergenceOptions::Alignment::kOn ||
-              (o.alignment == DivergenceOptions::Alignment::kAuto && is_oversampled_flow(o.delay));
-  const std::size_t period = o.typical_period > 0
-                                 ? o.typical_period
-                                 : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
-  const std::size_t K =
-      o.horizon > 0 ? o.horizon : std::max<std::size_t>(20, std::min(x.size() / 10, 8 * period));
-  const DelayEmbedding e(x, o.dimension, o.delay);
-  // Room for K steps ahead, and for the interpolation stencil around shifted neighbours.
-  const std::size_t margin = r.aligned ? 2 : 0;
-  if (e.size() <= K + 2 * margin + o.theiler + 10) {
-    throw Error("lyapunov", fmt::format("{} samples are too few to follow {} steps with "
-                                        "dimension {} and delay {}",
-                                        x.size(), K, o.dimension, o.delay));
-  }
-  const std::size_t usable = e.size() - K - margin;
-  const NeighbourIndex index(e, usable, repeat_resolution(x));
-  const std::size_t max_refs = std::max<std::size_t>(200, o.max_reference_steps / (K + 1));
-  const std::size_t span = K + 1 + (o.dimension - 1) * o.delay;  // samples one pair reads
-  std::vector<double> shifted;
-  const std::size_t stride = std::max<std::size_t>(1, usable / max_refs);
-  const std::size_t blocks = o.jackknife_blocks;
-  // Per block sums of ln d(k) and counts, for the jackknife.
-  std::vector<std::vector<double>> sum(blocks, std::vector<double>(K + 1, 0.0));
-  std::vector<std::vector<double>> count(blocks, std::vector<double>(K + 1, 0.0));
-  for (std::size_t i = margin; i < usable; i += stride) {
-    const Neighbour nb = index.nearest(i, o.theiler);
-    if (nb.index >= usable || nb.index < margin) continue;
-    const std::size_t b = std::min(blocks - 1, (i * blocks) / usable);
-    // The neighbour's series, shifted by its (constant) offset: interpolated once per sample
-    // with fixed weights rather than once per coordinate per step.
-    const std::span<const double> other =
-        r.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
-                  : x.subspan(nb.index, span);
-    for (std::size_t k = 0; k <= K; ++k) {
-      double d2 = 0.0;
-      for (std::size_t d = 0; d < e.dimension(); ++d) {
-        const double diff = x[i + k + d * o.delay] - other[k + d * o.delay];
-        d2 += diff * diff;
-      }
-      if (d2 > 0.0) {
-        sum[b][k] += 0.5 * std::log(d2);
-        count[b][k] += 1.0;
-      }
-    }
-    ++r.references;
-  }
-  if (r.references < 20) throw Error("lyapunov", "fewer than 20 reference points have neighbours");
+namespace {
 
-  const auto curve_without = [&](std::size_t skip) {
-    std::vector<double> S(K + 1, 0.0);
-    for (std::size_t k = 0; k <= K; ++k) {
+// How far pairs are followed and which references can be followed that far.
+struct Plan {
+  bool aligned = false;
+  std::size_t period = 0, K = 0, margin = 0, usable = 0;
+};
+
+Plan make_plan(std::span<const double> x, const DelayEmbedding& e, const DivergenceOptions& o) {
+  Plan p;
+  p.aligned = o.alignment == DivergenceOptions::Alignment::kOn ||
+              (o.alignment == DivergenceOptions::Alignment::kAuto && is_oversampled_flow(o.delay));
+  p.period = o.typical_period > 0 ? o.typical_period
+                                  : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
+  p.K = o.horizon > 0 ? o.horizon
+                      : std::max<std::size_t>(20, std::min(x.size() / 10, 8 * p.period));
+  // Room for K steps ahead, and for the interpolation stencil around shifted neighbours.
+  p.margin = p.aligned ? 2 : 0;
+  if (e.size() <= p.K + 2 * p.margin + o.theiler + 10) {
+    throw Error("lyapunov", fmt::format("{} samples are too few to follow {} steps with "
+                                        "dimension {} and delay {}: a longer record is needed",
+                                        x.size(), p.K, o.dimension, o.delay));
+  }
+  p.usable = e.size() - p.K - p.margin;
+  return p;
+}
+
+// Per block of references, the sums of ln d(k) and their counts (for the jackknife).
+struct BlockSums {
+  std::vector<std::vector<double>> sum, count;
+  std::size_t references = 0;
+  // The mean curve over every block but `skip` (skip = blocks: all of them).
+  [[nodiscard]] std::vector<double> curve_without(std::size_t skip) const {
+    const std::size_t points = sum.front().size();
+    std::vector<double> S(points, 0.0);
+    for (std::size_t k = 0; k < points; ++k) {
       double s = 0.0, c = 0.0;
-      for (std::size_t b = 0; b < blocks; ++b) {
+      for (std::size_t b = 0; b < sum.size(); ++b) {
         if (b == skip) continue;
         s += sum[b][k];
         c += count[b][k];
@@ -85,24 +65,58 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
       S[k] = c > 0 ? s / c : 0.0;
     }
     return S;
-  };
-  r.curve = curve_without(blocks);  // skip none
+  }
+};
 
-  const std::size_t spacing =
-      o.slope_spacing > 0 ? o.slope_spacing : std::max<std::size_t>(1, period / 2);
-  const LinearRegion region = find_linear_region(r.curve, spacing, o.slope_tolerance);
-  r.found_linear_region = region.found;
-  r.fit_first = region.first;
-  r.fit_last = region.last;
-  r.slope_per_step = region.slope;
-  r.intercept = region.intercept;
-  r.lambda_per_s = region.slope * rate_Hz;
+BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const Plan& p,
+                       const DivergenceOptions& o) {
+  const NeighbourIndex index(e, p.usable, repeat_resolution(x));
+  const std::size_t max_refs = std::max<std::size_t>(200, o.max_reference_steps / (p.K + 1));
+  const std::size_t span = p.K + 1 + (o.dimension - 1) * o.delay;  // samples one pair reads
+  const std::size_t stride = std::max<std::size_t>(1, p.usable / max_refs);
+  const std::size_t blocks = o.jackknife_blocks;
+  BlockSums bs{std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0)),
+               std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
+  std::vector<double> shifted;
+  for (std::size_t i = p.margin; i < p.usable; i += stride) {
+    const Neighbour nb = index.nearest(i, o.theiler);
+    if (nb.index >= p.usable || nb.index < p.margin) continue;
+    const std::size_t b = std::min(blocks - 1, (i * blocks) / p.usable);
+    // The neighbour's series, shifted by its (constant) offset: interpolated once per sample
+    // with fixed weights rather than once per coordinate per step.
+    const std::span<const double> other =
+        p.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
+                  : x.subspan(nb.index, span);
+    for (std::size_t k = 0; k <= p.K; ++k) {
+      double d2 = 0.0;
+      for (std::size_t d = 0; d < e.dimension(); ++d) {
+        const double diff = x[i + k + d * o.delay] - other[k + d * o.delay];
+        d2 += diff * diff;
+      }
+      if (d2 > 0.0) {
+        bs.sum[b][k] += 0.5 * std::log(d2);
+        bs.count[b][k] += 1.0;
+      }
+    }
+    ++bs.references;
+  }
+  if (bs.references < 20) {
+    throw Error("lyapunov", fmt::format("only {} reference points have a neighbour outside the "
+                                        "Theiler window ({} samples); at least 20 are needed: "
+                                        "a longer record, or a shorter --theiler",
+                                        bs.references, o.theiler));
+  }
+  return bs;
+}
 
-  // Jackknife over blocks of references on the chosen window, plus the change when the window
-  // is narrowed by one spacing at either end (the choice of window is part of the estimate).
+// Jackknife over blocks of references on the chosen window, plus the change when the window
+// is narrowed by one spacing at either end (the choice of window is part of the estimate);
+// per step.
+double slope_uncertainty(const BlockSums& bs, const DivergenceResult& r, std::size_t spacing) {
+  const std::size_t blocks = bs.sum.size();
   std::vector<double> slopes;
   for (std::size_t b = 0; b < blocks; ++b) {
-    slopes.push_back(fit_line(curve_without(b), r.fit_first, r.fit_last).slope);
+    slopes.push_back(fit_line(bs.curve_without(b), r.fit_first, r.fit_last).slope);
   }
   const double mean = std::accumulate(slopes.begin(), slopes.end(), 0.0) / blocks;
   double var = 0.0;
@@ -114,7 +128,31 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
     const double c = fit_line(r.curve, r.fit_first, r.fit_last - spacing).slope;
     window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));
   }
-  r.uncertainty_per_s = std::hypot(jack, window) * rate_Hz;
+  return std::hypot(jack, window);
+}
+
+}  // namespace
+
+DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
+                                     const DivergenceOptions& o) {
+  o.validate(x.size());
+  const DelayEmbedding e(x, o.dimension, o.delay);
+  const Plan plan = make_plan(x, e, o);
+  const BlockSums sums = follow_pairs(x, e, plan, o);
+  DivergenceResult r;
+  r.aligned = plan.aligned;
+  r.references = sums.references;
+  r.curve = sums.curve_without(o.jackknife_blocks);
+  const std::size_t spacing =
+      o.slope_spacing > 0 ? o.slope_spacing : std::max<std::size_t>(1, plan.period / 2);
+  const LinearRegion region = find_linear_region(r.curve, spacing, o.slope_tolerance);
+  r.found_linear_region = region.found;
+  r.fit_first = region.first;
+  r.fit_last = region.last;
+  r.slope_per_step = region.slope;
+  r.intercept = region.intercept;
+  r.lambda_per_s = region.slope * rate_Hz;
+  r.uncertainty_per_s = slope_uncertainty(sums, r, spacing) * rate_Hz;
   return r;
 }
 
