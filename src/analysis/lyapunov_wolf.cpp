@@ -21,102 +21,94 @@ void WolfOptions::validate(std::size_t n) const {
   }
 }
 
-WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOptions& o) {
-  o.validate(x.size());
-  const DelayEmbedding e(x, o.dimension, o.delay);
-  const std::size_t period = o.typical_period > 0
-                                 ? o.typical_period
-                                 : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
-  const std::size_t evolve = o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, period / 4);
+namespace {
+
+struct Candidate {
+  double time, distance, angle;
+};
+
+// A neighbour followed along the fiducial trajectory.
+struct Pair {
+  double time = -1.0;  ///< (fractional) index of the neighbour; < 0: none
+  std::size_t age = 0;
+  [[nodiscard]] bool exists() const { return time >= 0.0; }
+};
+
+std::size_t typical_period(std::span<const double> x, const WolfOptions& o) {
+  return o.typical_period > 0 ? o.typical_period
+                              : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
+}
+
+double attractor_diameter(std::span<const double> x, const WolfOptions& o) {
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
   const double diameter = (*hi - *lo) * std::sqrt(static_cast<double>(o.dimension));
-  const double min_scale = o.min_scale > 0.0 ? o.min_scale : 1e-4 * diameter;
   if (!(diameter > 0.0)) throw Error("wolf", "the series is constant");
-  if (e.size() < evolve + o.theiler + 20) throw Error("wolf", "the series is too short");
+  return diameter;
+}
 
-  const bool aligned = o.align && is_oversampled_flow(o.delay);
-  // One sample of margin on each side for the interpolation stencil of aligned neighbours.
-  const std::size_t margin = aligned ? 2 : 0;
-  const std::size_t usable = e.size() - evolve - margin;
-  const NeighbourIndex index(e, usable, std::max(repeat_resolution(x), min_scale));
-  const bool flow = is_oversampled_flow(o.delay);
-  // Scales follow the data density: the median nearest-neighbour distance, sampled.
-  const auto median_nn = [&] {
-    std::vector<double> nn;
-    for (std::size_t i = margin; i < usable; i += std::max<std::size_t>(1, usable / 300)) {
-      const Neighbour nb = index.nearest(i, o.theiler);
-      if (nb.index < usable) nn.push_back(std::sqrt(nb.distance2));
-    }
-    if (nn.empty()) throw Error("wolf", "no neighbours outside the Theiler window");
-    std::nth_element(nn.begin(), nn.begin() + nn.size() / 2, nn.end());
-    return nn[nn.size() / 2];
-  };
-  const double nn_scale =
-      o.max_scale > 0.0 && (o.candidate_scale > 0.0 || !flow) ? 0.0 : median_nn();
-  // Replacement scale: as small as the data density allows (Wolf et al.: the smaller the
-  // better while neighbours remain).
-  const double max_scale = o.max_scale > 0.0 ? o.max_scale : o.scale_factor * nn_scale;
-  // Replacement candidates: for flows the closest ones (a farther start leaves the linear
-  // regime sooner, while the settling period below aligns the orientation anyway); for maps
-  // the best-oriented within max_scale.
-  const double candidate_scale = o.candidate_scale > 0.0 ? o.candidate_scale
-                                 : flow                  ? nn_scale
-                                                         : max_scale;
-  std::vector<double> sep(o.dimension), cand(o.dimension);
+// The space Wolf's program works in: the embedded record, its neighbour index and the
+// scales of replacement, with the two operations the program needs (measure a separation,
+// choose a neighbour).
+class WolfGeometry {
+ public:
+  WolfGeometry(std::span<const double> x, const WolfOptions& o)
+      : o_(o),
+        e_(x, o.dimension, o.delay),
+        period_(typical_period(x, o)),
+        evolve_(o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, period_ / 4)),
+        diameter_(attractor_diameter(x, o)),
+        min_scale_(o.min_scale > 0.0 ? o.min_scale : 1e-4 * diameter_),
+        aligned_(o.align && is_oversampled_flow(o.delay)),
+        // One sample of margin on each side for the interpolation stencil of aligned neighbours.
+        margin_(aligned_ ? 2 : 0),
+        usable_(checked_usable()),
+        index_(e_, usable_, std::max(repeat_resolution(x), min_scale_)),
+        flow_(is_oversampled_flow(o.delay)),
+        nn_scale_(o.max_scale > 0.0 && (o.candidate_scale > 0.0 || !flow_) ? 0.0 : median_nn()),
+        // Replacement scale: as small as the data density allows (Wolf et al.: the smaller
+        // the better while neighbours remain).
+        max_scale_(o.max_scale > 0.0 ? o.max_scale : o.scale_factor * nn_scale_),
+        // Replacement candidates: for flows the closest ones (a farther start leaves the
+        // linear regime sooner, while the settling period aligns the orientation anyway); for
+        // maps the best-oriented within max_scale.
+        candidate_scale_(o.candidate_scale > 0.0 ? o.candidate_scale
+                         : flow_                  ? nn_scale_
+                                                  : max_scale_),
+        cand_(o.dimension) {}
+
+  [[nodiscard]] std::size_t period() const { return period_; }
+  [[nodiscard]] std::size_t evolve() const { return evolve_; }
+  [[nodiscard]] std::size_t margin() const { return margin_; }
+  [[nodiscard]] std::size_t usable() const { return usable_; }
+  [[nodiscard]] bool flow() const { return flow_; }
+  [[nodiscard]] double min_scale() const { return min_scale_; }
+  [[nodiscard]] double max_scale() const { return max_scale_; }
+  [[nodiscard]] double candidate_scale() const { return candidate_scale_; }
+
   // Separation vector from fiducial point i to the neighbour at (fractional) time j.
-  const auto separation = [&](std::size_t i, double j, std::vector<double>& out) {
+  double separation(std::size_t i, double j, std::vector<double>& out) const {
     double d2 = 0.0;
-    for (std::size_t d = 0; d < o.dimension; ++d) {
-      const double other =
-          aligned ? interpolated_coordinate(e, j, d) : e.coordinate(static_cast<std::size_t>(j), d);
-      out[d] = other - e.coordinate(i, d);
+    for (std::size_t d = 0; d < o_.dimension; ++d) {
+      const double other = aligned_ ? interpolated_coordinate(e_, j, d)
+                                    : e_.coordinate(static_cast<std::size_t>(j), d);
+      out[d] = other - e_.coordinate(i, d);
       d2 += out[d] * out[d];
     }
     return std::sqrt(d2);
-  };
-  const auto place = [&](std::size_t i, std::size_t j) {
-    return static_cast<double>(j) + (aligned && j >= margin ? closest_offset(e, i, j) : 0.0);
-  };
+  }
 
-  WolfResult r;
-  const double dt = 1.0 / rate_Hz;
-  // Candidates for a neighbour: the nearest few dozen around the fiducial point, each placed
-  // (aligned in time for flows) before its scale and orientation are judged.
-  const std::size_t candidates = 40;
-  struct Candidate {
-    double time, distance, angle;
-  };
-  std::vector<Candidate> pool;
-  const auto choose = [&](std::size_t fid, const std::vector<double>* old_sep, double radius,
-                          double& d_out) {
-    // Each candidate is placed (aligned in time for flows) and measured once.
-    pool.clear();
-    double old_norm = 0.0;
-    if (old_sep != nullptr) {
-      for (double c : *old_sep) old_norm += c * c;
-      old_norm = std::sqrt(old_norm);
-    }
-    for (const Neighbour& c : index.k_nearest(fid, candidates, o.theiler)) {
-      if (c.index >= usable || c.index < margin) continue;
-      const double j = place(fid, c.index);
-      const double d = separation(fid, j, cand);
-      if (d < min_scale) continue;
-      double angle = d;  // the first neighbour: simply the nearest
-      if (old_sep != nullptr) {
-        double dot = 0.0;
-        for (std::size_t k = 0; k < o.dimension; ++k) dot += cand[k] * (*old_sep)[k];
-        angle = std::acos(std::clamp(dot / (d * old_norm), -1.0, 1.0));
-      }
-      pool.push_back({j, d, angle});
-    }
-    if (pool.empty()) {
+  // A neighbour for fiducial point fid: the best-oriented (relative to old_sep; with none,
+  // the nearest) within radius, widening it up to 8x; -1 when there is no candidate.
+  double choose(std::size_t fid, const std::vector<double>* old_sep, double radius,
+                double& d_out) {
+    collect_candidates(fid, old_sep);
+    if (pool_.empty()) {
       d_out = 0.0;
       return -1.0;
     }
-    // The best-oriented one within the radius, widening it up to 8x when none is.
     for (double scale = radius; scale <= 8.0 * radius; scale *= 2.0) {
       const Candidate* best = nullptr;
-      for (const Candidate& c : pool) {
+      for (const Candidate& c : pool_) {
         if (c.distance <= scale && (best == nullptr || c.angle < best->angle)) best = &c;
       }
       if (best != nullptr) {
@@ -125,113 +117,222 @@ WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOp
       }
     }
     const auto nearest =
-        std::min_element(pool.begin(), pool.end(),
+        std::min_element(pool_.begin(), pool_.end(),
                          [](const auto& a, const auto& b) { return a.distance < b.distance; });
     d_out = nearest->distance;
     return nearest->time;
-  };
-
-  // A freshly chosen neighbour is close partly by coincidence of the delay coordinates; its
-  // distance first grows faster than the Lyapunov rate (on Lorenz x about twice as fast for
-  // one orbital period: the initial transient of every divergence curve). For flows each
-  // pair is therefore measured only once it has evolved for one period. So that no stretch
-  // of the fiducial trajectory goes unmeasured (skipping the periods after replacements
-  // skips the contractions that follow strong stretching: +20-50 % on Lorenz), the
-  // replacement is chosen when the measured pair reaches max_scale and settles while the
-  // old pair is still measured; the old pair hands over once the new one has settled.
-  // Maps need no settling: a replacement takes over at once, as in Wolf's program.
-  const std::size_t settle = o.settle > 0 ? o.settle : flow ? period : 0;
-  struct Pair {
-    double time = -1.0;  ///< (fractional) index of the neighbour; < 0: none
-    std::size_t age = 0;
-    [[nodiscard]] bool exists() const { return time >= 0.0; }
-  };
-  const double end = static_cast<double>(usable);
-  const std::size_t chains = std::max<std::size_t>(1, o.chains);
-  double log_sum = 0.0, measured_s = 0.0;
-  std::vector<double> chain_log(chains, 0.0), chain_time(chains, 0.0);
-  // Stretching pooled by where along the record it was measured: the chains share the record,
-  // so their spread misses how the estimate varies along it; contiguous batches see that.
-  constexpr std::size_t kBatches = 10;
-  std::vector<double> batch_log(kBatches, 0.0), batch_time(kBatches, 0.0);
-  for (std::size_t c = 0; c < chains; ++c) {
-    // Chains start at staggered points of the first orbit and pool their stretching: one
-    // chain on a finite record rests on a few dozen replacements.
-    std::size_t fid = margin + (c * std::max<std::size_t>(period, 1)) / chains;
-    double d_prev = 0.0;
-    const auto fresh = [&] {
-      ++r.replacements;
-      return Pair{choose(fid, nullptr, candidate_scale, d_prev), 0};
-    };
-    Pair measured{choose(fid, nullptr, candidate_scale, d_prev), 0}, incoming;
-    while (fid + evolve < usable) {
-      fid += evolve;
-      for (Pair* p : {&measured, &incoming}) {
-        if (!p->exists()) continue;
-        p->time += static_cast<double>(evolve);
-        p->age += evolve;
-        if (p->time >= end) *p = Pair{};  // the neighbour's record ends
-      }
-      if (!measured.exists()) {  // hand over early, or start afresh
-        if (incoming.exists()) {
-          measured = std::exchange(incoming, Pair{});
-          d_prev = separation(fid, measured.time, sep);
-        } else {
-          measured = fresh();
-        }
-        continue;
-      }
-      const double d = separation(fid, measured.time, sep);
-      if (measured.age >= settle && d_prev > 0.0 && d > 0.0) {
-        chain_log[c] += std::log(d / d_prev);
-        const std::size_t b = std::min(kBatches - 1, fid * kBatches / usable);
-        batch_log[b] += std::log(d / d_prev);
-        batch_time[b] += static_cast<double>(evolve) * dt;
-        chain_time[c] += static_cast<double>(evolve) * dt;
-        if (c == 0) {  // the running estimate shown is the first chain's, as in Wolf's paper
-          ++r.intervals;
-          r.running_time_s.push_back(static_cast<double>(fid) * dt);
-          r.running_per_s.push_back(chain_log[0] / chain_time[0]);
-        }
-      }
-      d_prev = d;
-      // A pair that has collapsed (its contraction is counted above) carries no direction.
-      if (d < min_scale) {
-        measured = fresh();
-        incoming = Pair{};
-        continue;
-      }
-      if (measured.age < settle) continue;
-      if (!incoming.exists() && d > max_scale) {
-        // Wolf's replacement: a close point whose separation best keeps the orientation.
-        double d_new = 0.0;
-        incoming = Pair{choose(fid, &sep, candidate_scale, d_new), 0};
-        if (incoming.exists()) ++r.replacements;
-      }
-      if (incoming.exists() && incoming.age >= settle) {
-        measured = std::exchange(incoming, Pair{});
-        d_prev = separation(fid, measured.time, sep);
-      }
-    }
-    log_sum += chain_log[c];
-    measured_s += chain_time[c];
   }
-  // No measured interval at all (every pair closer than min_scale: a strictly periodic
-  // record) is a result: no stretching was observed.
+
+ private:
+  std::size_t checked_usable() const {
+    if (e_.size() < evolve_ + o_.theiler + 20) throw Error("wolf", "the series is too short");
+    return e_.size() - evolve_ - margin_;
+  }
+
+  // Scales follow the data density: the median nearest-neighbour distance, sampled.
+  double median_nn() const {
+    std::vector<double> nn;
+    for (std::size_t i = margin_; i < usable_; i += std::max<std::size_t>(1, usable_ / 300)) {
+      const Neighbour nb = index_.nearest(i, o_.theiler);
+      if (nb.index < usable_) nn.push_back(std::sqrt(nb.distance2));
+    }
+    if (nn.empty()) {
+      throw Error("wolf", fmt::format("no neighbours outside the Theiler window ({} samples): a "
+                                      "longer record, or a shorter --theiler",
+                                      o_.theiler));
+    }
+    std::nth_element(nn.begin(), nn.begin() + nn.size() / 2, nn.end());
+    return nn[nn.size() / 2];
+  }
+
+  double place(std::size_t i, std::size_t j) const {
+    return static_cast<double>(j) + (aligned_ && j >= margin_ ? closest_offset(e_, i, j) : 0.0);
+  }
+
+  // The nearest few dozen around the fiducial point, each placed (aligned in time for flows)
+  // and measured once before its scale and orientation are judged.
+  void collect_candidates(std::size_t fid, const std::vector<double>* old_sep) {
+    constexpr std::size_t kCandidates = 40;
+    pool_.clear();
+    double old_norm = 0.0;
+    if (old_sep != nullptr) {
+      for (double c : *old_sep) old_norm += c * c;
+      old_norm = std::sqrt(old_norm);
+    }
+    for (const Neighbour& c : index_.k_nearest(fid, kCandidates, o_.theiler)) {
+      if (c.index >= usable_ || c.index < margin_) continue;
+      const double j = place(fid, c.index);
+      const double d = separation(fid, j, cand_);
+      if (d < min_scale_) continue;
+      double angle = d;  // the first neighbour: simply the nearest
+      if (old_sep != nullptr) {
+        double dot = 0.0;
+        for (std::size_t k = 0; k < o_.dimension; ++k) dot += cand_[k] * (*old_sep)[k];
+        angle = std::acos(std::clamp(dot / (d * old_norm), -1.0, 1.0));
+      }
+      pool_.push_back({j, d, angle});
+    }
+  }
+
+  const WolfOptions& o_;
+  const DelayEmbedding e_;
+  const std::size_t period_, evolve_;
+  const double diameter_, min_scale_;
+  const bool aligned_;
+  const std::size_t margin_, usable_;
+  const NeighbourIndex index_;
+  const bool flow_;
+  const double nn_scale_, max_scale_, candidate_scale_;
+  std::vector<double> cand_;
+  std::vector<Candidate> pool_;
+};
+
+// Stretching summed per chain and, pooled over chains, per contiguous batch of the record:
+// the chains share the record, so their spread misses how the estimate varies along it;
+// contiguous batches see that.
+struct Stretching {
+  static constexpr std::size_t kBatches = 10;
+  std::vector<double> chain_log, chain_time;
+  std::vector<double> batch_log = std::vector<double>(kBatches, 0.0);
+  std::vector<double> batch_time = std::vector<double>(kBatches, 0.0);
+  explicit Stretching(std::size_t chains) : chain_log(chains, 0.0), chain_time(chains, 0.0) {}
+};
+
+// A freshly chosen neighbour is close partly by coincidence of the delay coordinates; its
+// distance first grows faster than the Lyapunov rate (on Lorenz x about twice as fast for
+// one orbital period: the initial transient of every divergence curve). For flows each
+// pair is therefore measured only once it has evolved for one period. So that no stretch
+// of the fiducial trajectory goes unmeasured (skipping the periods after replacements
+// skips the contractions that follow strong stretching: +20-50 % on Lorenz), the
+// replacement is chosen when the measured pair reaches max_scale and settles while the
+// old pair is still measured; the old pair hands over once the new one has settled.
+// Maps need no settling: a replacement takes over at once, as in Wolf's program.
+class Chain {
+ public:
+  Chain(WolfGeometry& g, const WolfOptions& o, std::size_t c, std::size_t chains, double dt,
+        Stretching& s, WolfResult& r)
+      : g_(g), c_(c), dt_(dt), settle_(o.settle > 0 ? o.settle : g.flow() ? g.period() : 0),
+        s_(s), r_(r), sep_(o.dimension),
+        // Chains start at staggered points of the first orbit and pool their stretching: one
+        // chain on a finite record rests on a few dozen replacements.
+        fid_(g.margin() + (c * std::max<std::size_t>(g.period(), 1)) / chains) {}
+
+  void follow() {
+    measured_ = Pair{g_.choose(fid_, nullptr, g_.candidate_scale(), d_prev_), 0};
+    while (fid_ + g_.evolve() < g_.usable()) step();
+  }
+
+ private:
+  void step() {
+    fid_ += g_.evolve();
+    age_pairs();
+    if (!measured_.exists()) {  // hand over early, or start afresh
+      if (incoming_.exists()) {
+        hand_over();
+      } else {
+        measured_ = fresh();
+      }
+      return;
+    }
+    const double d = g_.separation(fid_, measured_.time, sep_);
+    if (measured_.age >= settle_ && d_prev_ > 0.0 && d > 0.0) count(std::log(d / d_prev_));
+    d_prev_ = d;
+    // A pair that has collapsed (its contraction is counted above) carries no direction.
+    if (d < g_.min_scale()) {
+      measured_ = fresh();
+      incoming_ = Pair{};
+      return;
+    }
+    if (measured_.age < settle_) return;
+    if (!incoming_.exists() && d > g_.max_scale()) {
+      // Wolf's replacement: a close point whose separation best keeps the orientation.
+      double d_new = 0.0;
+      incoming_ = Pair{g_.choose(fid_, &sep_, g_.candidate_scale(), d_new), 0};
+      if (incoming_.exists()) ++r_.replacements;
+    }
+    if (incoming_.exists() && incoming_.age >= settle_) hand_over();
+  }
+
+  void age_pairs() {
+    const double end = static_cast<double>(g_.usable());
+    for (Pair* p : {&measured_, &incoming_}) {
+      if (!p->exists()) continue;
+      p->time += static_cast<double>(g_.evolve());
+      p->age += g_.evolve();
+      if (p->time >= end) *p = Pair{};  // the neighbour's record ends
+    }
+  }
+
+  Pair fresh() {
+    ++r_.replacements;
+    return Pair{g_.choose(fid_, nullptr, g_.candidate_scale(), d_prev_), 0};
+  }
+
+  void hand_over() {
+    measured_ = std::exchange(incoming_, Pair{});
+    d_prev_ = g_.separation(fid_, measured_.time, sep_);
+  }
+
+  void count(double log_stretch) {
+    const double interval_s = static_cast<double>(g_.evolve()) * dt_;
+    s_.chain_log[c_] += log_stretch;
+    const std::size_t b = std::min(Stretching::kBatches - 1, fid_ * Stretching::kBatches / g_.usable());
+    s_.batch_log[b] += log_stretch;
+    s_.batch_time[b] += interval_s;
+    s_.chain_time[c_] += interval_s;
+    if (c_ == 0) {  // the running estimate shown is the first chain's, as in Wolf's paper
+      ++r_.intervals;
+      r_.running_time_s.push_back(static_cast<double>(fid_) * dt_);
+      r_.running_per_s.push_back(s_.chain_log[0] / s_.chain_time[0]);
+    }
+  }
+
+  WolfGeometry& g_;
+  const std::size_t c_;
+  const double dt_;
+  const std::size_t settle_;
+  Stretching& s_;
+  WolfResult& r_;
+  std::vector<double> sep_;
+  std::size_t fid_;
+  double d_prev_ = 0.0;
+  Pair measured_, incoming_;
+};
+
+// The exponent over all chains, and its uncertainty from batch means (the record cut into
+// 10 contiguous stretches, all chains pooled): the standard error of the time-weighted mean
+// of the batches' exponents. No measured interval at all (every pair closer than min_scale:
+// a strictly periodic record) is a result: no stretching was observed.
+void summarize(const Stretching& s, WolfResult& r) {
+  double log_sum = 0.0, measured_s = 0.0;
+  for (std::size_t c = 0; c < s.chain_log.size(); ++c) {
+    log_sum += s.chain_log[c];
+    measured_s += s.chain_time[c];
+  }
   r.measured_s = measured_s;
   r.lambda_per_s = measured_s > 0.0 ? log_sum / measured_s : 0.0;
-  // Batch means (the record cut into 10 contiguous stretches, all chains pooled): the
-  // standard error of the time-weighted mean of the batches' exponents.
   double var = 0.0, weight = 0.0;
   std::size_t used = 0;
-  for (std::size_t b = 0; b < kBatches; ++b) {
-    if (batch_time[b] <= 0.0) continue;
-    const double lb = batch_log[b] / batch_time[b];
-    var += batch_time[b] * (lb - r.lambda_per_s) * (lb - r.lambda_per_s);
-    weight += batch_time[b];
+  for (std::size_t b = 0; b < Stretching::kBatches; ++b) {
+    if (s.batch_time[b] <= 0.0) continue;
+    const double lb = s.batch_log[b] / s.batch_time[b];
+    var += s.batch_time[b] * (lb - r.lambda_per_s) * (lb - r.lambda_per_s);
+    weight += s.batch_time[b];
     ++used;
   }
   r.uncertainty_per_s = used > 1 && weight > 0.0 ? std::sqrt(var / weight / (used - 1.0)) : 0.0;
+}
+
+}  // namespace
+
+WolfResult wolf_exponent(std::span<const double> x, double rate_Hz, const WolfOptions& o) {
+  o.validate(x.size());
+  WolfGeometry g(x, o);
+  WolfResult r;
+  const std::size_t chains = std::max<std::size_t>(1, o.chains);
+  Stretching s(chains);
+  for (std::size_t c = 0; c < chains; ++c) Chain(g, o, c, chains, 1.0 / rate_Hz, s, r).follow();
+  summarize(s, r);
   return r;
 }
 
