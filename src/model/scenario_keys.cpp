@@ -348,6 +348,9 @@ std::string setting_text(const Scenario& scenario, const std::string& key) {
   return format_number(spec.get_number(scenario) / spec.scale);
 }
 
+// Written line by line rather than through toml++: the file is meant to be read and edited by
+// a person, with each key's unit, meaning and range as a comment beside it, and toml++ (3.x)
+// writes no comments. The reader is toml++; a test reads every printed key back.
 std::string scenario_to_toml(const Scenario& scenario) {
   std::string out =
       "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n";
