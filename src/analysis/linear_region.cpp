@@ -1,25 +1,29 @@
 #include "pneumachaos/analysis/linear_region.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
 namespace pneumachaos {
 
+// Least squares by Eigen's QR of the design matrix (1, k): no cancellation of raw sums.
 LineFit fit_line(const std::vector<double>& y, std::size_t first, std::size_t last) {
-  double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-  for (std::size_t k = first; k <= last && k < y.size(); ++k) {
-    const double t = static_cast<double>(k);
-    n += 1;
-    st += t;
-    sy += y[k];
-    stt += t * t;
-    sty += t * y[k];
-  }
   LineFit f;
-  const double den = n * stt - st * st;
-  if (n < 2 || den == 0.0) return f;
-  f.slope = (n * sty - st * sy) / den;
-  f.intercept = (sy - f.slope * st) / n;
+  if (first >= y.size() || last <= first) return f;
+  const std::size_t end = std::min(last, y.size() - 1);
+  const auto n = static_cast<Eigen::Index>(end - first + 1);
+  if (n < 2) return f;
+  Eigen::MatrixXd design(n, 2);
+  Eigen::VectorXd values(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    design(i, 0) = 1.0;
+    design(i, 1) = static_cast<double>(first) + static_cast<double>(i);
+    values(i) = y[first + static_cast<std::size_t>(i)];
+  }
+  const Eigen::Vector2d c = design.colPivHouseholderQr().solve(values);
+  f.intercept = c(0);
+  f.slope = c(1);
   return f;
 }
 

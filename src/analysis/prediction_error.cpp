@@ -1,5 +1,7 @@
 #include "pneumachaos/analysis/prediction_error.hpp"
 
+#include <Eigen/Dense>
+
 #include <array>
 #include <cmath>
 #include <vector>
@@ -21,67 +23,27 @@ std::size_t usable_vectors(std::size_t n, const PredictionOptions& o) {
   return n > reach + needed ? n - reach : 0;
 }
 
-// Solves the (small, symmetric positive semi-definite) normal equations A b = y in place by
-// Gaussian elimination with partial pivoting; a singular direction gets coefficient 0.
-template <std::size_t M>
-std::array<double, M> solve(std::array<std::array<double, M>, M> A, std::array<double, M> y) {
-  for (std::size_t c = 0; c < M; ++c) {
-    std::size_t p = c;
-    for (std::size_t r = c + 1; r < M; ++r) {
-      if (std::abs(A[r][c]) > std::abs(A[p][c])) p = r;
-    }
-    std::swap(A[c], A[p]);
-    std::swap(y[c], y[p]);
-    if (std::abs(A[c][c]) < 1e-300) continue;
-    for (std::size_t r = c + 1; r < M; ++r) {
-      const double f = A[r][c] / A[c][c];
-      for (std::size_t k = c; k < M; ++k) A[r][k] -= f * A[c][k];
-      y[r] -= f * y[c];
-    }
-  }
-  std::array<double, M> b{};
-  for (std::size_t c = M; c-- > 0;) {
-    if (std::abs(A[c][c]) < 1e-300) continue;
-    double s = y[c];
-    for (std::size_t k = c + 1; k < M; ++k) s -= A[c][k] * b[k];
-    b[c] = s / A[c][c];
-  }
-  return b;
-}
-
 // Least-squares linear predictor on (1, the first `used` delay coordinates); the RMS of its
 // in-sample residual. In-sample favours the linear rule, so the ratio errs towards "noise".
+// Solved by Eigen's column-pivoting QR of the design matrix (not the normal equations, which
+// square its condition number); a direction the data do not span gets no weight.
 double linear_error(std::span<const double> x, const PredictionOptions& o, std::size_t usable) {
-  constexpr std::size_t kMax = 9;  // constant + up to 8 coordinates (Cao searches d <= 8)
-  const std::size_t used = std::min(o.dimension, kMax - 1);
+  constexpr std::size_t kMaxCoordinates = 8;  // Cao searches d <= 8
+  const std::size_t used = std::min(o.dimension, kMaxCoordinates);
   const std::size_t h = horizon_of(o), last = (o.dimension - 1) * o.delay;
-  std::array<std::array<double, kMax>, kMax> A{};
-  std::array<double, kMax> y{};
-  std::array<double, kMax> row{};
-  const auto fill = [&](std::size_t i) {
-    row.fill(0.0);
-    row[0] = 1.0;
-    for (std::size_t d = 0; d < used; ++d) row[d + 1] = x[i + last - d * o.delay];
-  };
-  for (std::size_t i = 0; i < usable; ++i) {
-    fill(i);
-    const double target = x[i + last + h];
-    for (std::size_t a = 0; a < kMax; ++a) {
-      y[a] += row[a] * target;
-      for (std::size_t b = 0; b < kMax; ++b) A[a][b] += row[a] * row[b];
+  const auto rows = static_cast<Eigen::Index>(usable);
+  Eigen::MatrixXd design(rows, static_cast<Eigen::Index>(used + 1));
+  Eigen::VectorXd target(rows);
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    design(i, 0) = 1.0;
+    for (std::size_t d = 0; d < used; ++d) {
+      design(i, static_cast<Eigen::Index>(d + 1)) = x[k + last - d * o.delay];
     }
+    target(i) = x[k + last + h];
   }
-  for (std::size_t a = used + 1; a < kMax; ++a) A[a][a] = 1.0;  // unused coordinates
-  const auto beta = solve<kMax>(A, y);
-  double sse = 0.0;
-  for (std::size_t i = 0; i < usable; ++i) {
-    fill(i);
-    double p = 0.0;
-    for (std::size_t a = 0; a < kMax; ++a) p += beta[a] * row[a];
-    const double e = x[i + last + h] - p;
-    sse += e * e;
-  }
-  return std::sqrt(sse / static_cast<double>(usable));
+  const Eigen::VectorXd beta = design.colPivHouseholderQr().solve(target);
+  return (design * beta - target).norm() / std::sqrt(static_cast<double>(usable));
 }
 
 }  // namespace
