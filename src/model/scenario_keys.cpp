@@ -159,11 +159,23 @@ std::vector<KeySpec> build_keys() {
       "gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
       [](auto& s) -> auto& { return s.gas.R_J_per_kgK; }));
   k.push_back(number(
-      "gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law", 1.0,
+      "gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law and the energy equation", 1.0,
       Range{1.0, 1.67, true, false}, [](auto& s) -> auto& { return s.gas.heat_capacity_ratio; }));
   k.push_back(number(
       "gas.polytropic_exponent", "-", "k of the chamber equations: 1.4 adiabatic, 1.0 isothermal",
       1.0, Range{1.0, 1.67}, [](auto& s) -> auto& { return s.polytropic_exponent; }));
+  k.push_back(word<ChamberModel>(
+      "thermal.chamber_model",
+      "polytropic: eqs. (2)-(3) with gas.polytropic_exponent; energy: chamber temperatures as "
+      "states with wall heat transfer",
+      {"polytropic", "energy"}, [](auto& s) -> auto& { return s.thermal.chamber_model; }));
+  k.push_back(number(
+      "thermal.heat_transfer_W_per_m2K", "W/(m^2*K)",
+      "wall heat-transfer coefficient h (chamber_model = energy)", 1.0, kNonNegative,
+      [](auto& s) -> auto& { return s.thermal.heat_transfer_W_per_m2K; }));
+  k.push_back(number(
+      "thermal.wall_temperature_K", "K", "cylinder wall temperature (chamber_model = energy)",
+      1.0, kPositive, [](auto& s) -> auto& { return s.thermal.wall_temperature_K; }));
   k.push_back(number(
       "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.cylinder.bore_m; }));
