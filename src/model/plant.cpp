@@ -46,7 +46,7 @@ Plant::Plant(const Scenario& scenario)
   seal_ = make_friction_model(scenario.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
-    layout_.seal_z = layout_.append("z", "m", layout_.seal_z_count);
+    layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), layout_.seal_z_count);
   }
   const bool spring = load_.coupling == LoadCoupling::kSpring;
   piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
@@ -57,7 +57,8 @@ Plant::Plant(const Scenario& scenario)
     layout_.load_v = layout_.append("v_load", "m/s");
     if (guide_->state_count() > 0) {
       layout_.guide_z_count = guide_->state_count();
-      layout_.guide_z = layout_.append("z_guide", "m", layout_.guide_z_count);
+      layout_.guide_z = layout_.append(std::string(guide_->state_name()) + "_guide",
+                                       guide_->state_unit(), layout_.guide_z_count);
     }
   }
 }
@@ -67,6 +68,11 @@ std::vector<double> Plant::initial_state() const {
   x[layout_.P1] = ambient_Pa_;
   x[layout_.P2] = supply_Pa_;
   if (layout_.has_temperatures()) x[layout_.T1] = x[layout_.T2] = T_supply_;
+  // The seal (and guide) rested before the valve switched.
+  if (layout_.seal_z_count > 0)
+    seal_->rest_state(std::span<double>(x).subspan(layout_.seal_z, layout_.seal_z_count));
+  if (layout_.guide_z_count > 0)
+    guide_->rest_state(std::span<double>(x).subspan(layout_.guide_z, layout_.guide_z_count));
   return x;
 }
 
@@ -211,6 +217,8 @@ std::vector<double> Plant::state_scales() const {
   s[L.v] = 1e-2;
   s[L.P1] = s[L.P2] = 1e4;
   if (L.has_temperatures()) s[L.T1] = s[L.T2] = 1.0;  // 1 K
+  for (std::size_t i = 0; i < L.seal_z_count; ++i) s[L.seal_z + i] = seal_->state_scale();
+  for (std::size_t i = 0; i < L.guide_z_count; ++i) s[L.guide_z + i] = guide_->state_scale();
   if (L.has_load_body()) {
     s[L.load_x] = 1e-3;
     s[L.load_v] = 1e-2;

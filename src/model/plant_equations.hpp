@@ -56,11 +56,11 @@ T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x
   const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
   const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
   const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
+  const T* z = nz == 0 ? nullptr : x.data() + z0;
   if (!plant_detail::moving(m)) {
-    for (T& d : dz) d = T(0.0);  // bristles neither deflect nor relax at rest
+    friction_law::resting_rates(f.params(), z, dz.data(), dz.size());
     return T(0.0);
   }
-  const T* z = nz == 0 ? nullptr : x.data() + z0;
   return friction_law::moving_force_N(f.params(), friction_input(contact, x),
                                       plant_detail::direction_of(m), z, dz.data());
 }

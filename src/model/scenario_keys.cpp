@@ -113,6 +113,12 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
   keys.push_back(number(
       prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  keys.push_back(word<FrictionMemory>(
+      prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
+      {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
+  keys.push_back(number(
+      prefix + "lag_time_ms", "ms", "time constant of the Stribeck drop's lag (memory = lag)", 1e-3,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).lag_time_s; }));
   keys.push_back(number(
       prefix + "Fc_gain_N_per_MPa", "N/MPa",
       "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
