@@ -21,10 +21,13 @@ void FrictionModel::steady_state(const FrictionInput& /*in*/, std::span<double> 
   std::fill(z.begin(), z.end(), 0.0);
 }
 
+void FrictionModel::rest_state(std::span<double> z) const { std::fill(z.begin(), z.end(), 0.0); }
+
 std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params) {
   switch (params.kind) {
     case FrictionKind::kClassic:
     case FrictionKind::kStribeck:
+      if (params.lagged()) return std::make_unique<StribeckLagFriction>(params);
       return std::make_unique<StictionFriction>(params);
     case FrictionKind::kLuGre:
       return std::make_unique<LuGreFriction>(params);

@@ -90,12 +90,35 @@ T lugre_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& z, 
   return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
 }
 
+/// Hess-Soom lag (docs/model.md): the Stribeck weight s lags the velocity by tau, writes
+/// ds/dt = (exp(-(|v|/vs)^delta) - s) / tau; F = [Fc + (Fs - Fc) s] sgn v + B v while
+/// sliding in `direction`.
+template <typename T>
+T stribeck_lag_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction,
+                 const T& s, T& ds) {
+  const double d = direction;
+  T speed = d * in.v_m_per_s;
+  if (speed < 0.0) speed = T(0.0);
+  ds = (stribeck_weight(p, speed) - s) / p.lag_time_s;
+  const T fc = coulomb_N(p, in);
+  return d * (fc + (static_N(p, in) - fc) * s + p.viscous_Ns_per_m * speed);
+}
+
+/// Rates of the internal states while the contact rests: LuGre's bristles hold still; the
+/// lagged Stribeck weight recovers towards its value at v = 0, which is 1.
+template <typename T>
+void resting_rates(const FrictionParams& p, const T* z, T* dz, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) dz[i] = T(0.0);
+  if (p.lagged()) dz[0] = (1.0 - z[0]) / p.lag_time_s;
+}
+
 /// The force of whichever model `p.kind` names, while the contact moves; z and dz point to
 /// the model's internal states (none for the stiction models).
 template <typename T>
 T moving_force_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction,
                  const T* z, T* dz) {
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0]);
+  if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);
   return stiction_sliding_N(p, in, direction);
 }
 

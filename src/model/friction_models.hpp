@@ -34,4 +34,24 @@ class LuGreFriction final : public FrictionModel {
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 
+/// The stribeck model with memory = lag. True stiction as StictionFriction, but while sliding the Stribeck drop's weight s follows
+/// exp(-(|v|/vs)^delta) with a first-order lag: ds/dt = (exp(-(|v|/vs)^delta) - s) / tau,
+/// F = [Fc + (Fs - Fc) s] sgn v + B v (Hess & Soom 1990; docs/model.md). At rest s -> 1.
+class StribeckLagFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] std::size_t state_count() const override { return 1; }
+  [[nodiscard]] const char* state_name() const override { return "s_lag"; }
+  [[nodiscard]] const char* state_unit() const override { return "-"; }
+  [[nodiscard]] double state_scale() const override { return 1e-2; }
+  void rest_state(std::span<double> z) const override;
+  [[nodiscard]] bool has_stiction() const override { return true; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  void steady_state(const FrictionInput& in, std::span<double> z) const override;
+};
+
 }  // namespace pneumachaos

@@ -27,18 +27,26 @@ Plant::Plant(const Scenario& scenario)
       ambient_Pa_(scenario.ambient_pressure_Pa),
       supply_Pa_(scenario.supply_pressure_Pa()),
       polytropic_exponent_(scenario.polytropic_exponent),
-      RT_(scenario.gas.R_J_per_kgK * scenario.temperature_K) {
+      RT_(scenario.gas.R_J_per_kgK * scenario.temperature_K),
+      thermal_(scenario.thermal),
+      kappa_(scenario.gas.heat_capacity_ratio),
+      R_(scenario.gas.R_J_per_kgK),
+      T_supply_(scenario.temperature_K) {
   scenario.validate();
   A1_ = geometry_.area_head_m2();
   A2_ = geometry_.area_rod_m2();
-  // Chamber and supply air share one temperature (no energy equation), so each valve's
-  // upstream temperature is the same in either flow direction.
+  // The valves are sized for supply-temperature air upstream; with the energy equation the
+  // chambers' own temperatures correct the flow out of them (plant_equations.hpp).
   valve1_.emplace(scenario.valve, scenario.gas, scenario.circuit.S1(), scenario.temperature_K);
   valve2_.emplace(scenario.valve, scenario.gas, scenario.circuit.S2(), scenario.temperature_K);
+  if (thermal_.chamber_model == ChamberModel::kEnergy) {
+    layout_.T1 = layout_.append("T1", "K");
+    layout_.T2 = layout_.append("T2", "K");
+  }
   seal_ = make_friction_model(scenario.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
-    layout_.seal_z = layout_.append("z", "m", layout_.seal_z_count);
+    layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), layout_.seal_z_count);
   }
   const bool spring = load_.coupling == LoadCoupling::kSpring;
   piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
@@ -49,7 +57,8 @@ Plant::Plant(const Scenario& scenario)
     layout_.load_v = layout_.append("v_load", "m/s");
     if (guide_->state_count() > 0) {
       layout_.guide_z_count = guide_->state_count();
-      layout_.guide_z = layout_.append("z_guide", "m", layout_.guide_z_count);
+      layout_.guide_z = layout_.append(std::string(guide_->state_name()) + "_guide",
+                                       guide_->state_unit(), layout_.guide_z_count);
     }
   }
 }
@@ -58,6 +67,12 @@ std::vector<double> Plant::initial_state() const {
   std::vector<double> x(layout_.size, 0.0);
   x[layout_.P1] = ambient_Pa_;
   x[layout_.P2] = supply_Pa_;
+  if (layout_.has_temperatures()) x[layout_.T1] = x[layout_.T2] = T_supply_;
+  // The seal (and guide) rested before the valve switched.
+  if (layout_.seal_z_count > 0)
+    seal_->rest_state(std::span<double>(x).subspan(layout_.seal_z, layout_.seal_z_count));
+  if (layout_.guide_z_count > 0)
+    guide_->rest_state(std::span<double>(x).subspan(layout_.guide_z, layout_.guide_z_count));
   return x;
 }
 
@@ -74,8 +89,18 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
-double Plant::head_pressure_rate(std::span<const double> x) const { return head_chamber_rate(x); }
-double Plant::rod_pressure_rate(std::span<const double> x) const { return rod_chamber_rate(x); }
+double Plant::head_pressure_rate(std::span<const double> x) const {
+  if (!layout_.has_temperatures()) return head_chamber_rate(x);
+  std::vector<double> rates(layout_.size);
+  chamber_energy_rates(x, std::span<double>(rates));
+  return rates[layout_.P1];
+}
+double Plant::rod_pressure_rate(std::span<const double> x) const {
+  if (!layout_.has_temperatures()) return rod_chamber_rate(x);
+  std::vector<double> rates(layout_.size);
+  chamber_energy_rates(x, std::span<double>(rates));
+  return rates[layout_.P2];
+}
 
 void Plant::derivative(const Mode& mode, std::span<const double> x, std::span<double> dxdt,
                        double /*t*/) const {
@@ -191,6 +216,9 @@ std::vector<double> Plant::state_scales() const {
   s[L.x] = 1e-3;
   s[L.v] = 1e-2;
   s[L.P1] = s[L.P2] = 1e4;
+  if (L.has_temperatures()) s[L.T1] = s[L.T2] = 1.0;  // 1 K
+  for (std::size_t i = 0; i < L.seal_z_count; ++i) s[L.seal_z + i] = seal_->state_scale();
+  for (std::size_t i = 0; i < L.guide_z_count; ++i) s[L.guide_z + i] = guide_->state_scale();
   if (L.has_load_body()) {
     s[L.load_x] = 1e-3;
     s[L.load_v] = 1e-2;

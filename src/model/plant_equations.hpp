@@ -56,11 +56,11 @@ T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x
   const FrictionModel& f = contact == kSeal ? *seal_ : *guide_;
   const std::size_t z0 = contact == kSeal ? L.seal_z : L.guide_z;
   const std::size_t nz = contact == kSeal ? L.seal_z_count : L.guide_z_count;
+  const T* z = nz == 0 ? nullptr : x.data() + z0;
   if (!plant_detail::moving(m)) {
-    for (T& d : dz) d = T(0.0);  // bristles neither deflect nor relax at rest
+    friction_law::resting_rates(f.params(), z, dz.data(), dz.size());
     return T(0.0);
   }
-  const T* z = nz == 0 ? nullptr : x.data() + z0;
   return friction_law::moving_force_N(f.params(), friction_input(contact, x),
                                       plant_detail::direction_of(m), z, dz.data());
 }
@@ -83,12 +83,58 @@ T Plant::rod_chamber_rate(std::span<const T> x) const {
   return -k * RT_ / V2 * W2 + k * x[L.P2] * A2_ / V2 * x[L.v];  // eq. (3)
 }
 
+// The energy equation of one chamber (docs/model.md, "Chamber temperatures"): the first law
+// for an open volume of ideal gas, with H_in = sum of W * T of what flows in (out: negative),
+// W_in the net mass inflow and the wall heat h A_wall (T_wall - T). Writes dT/dt, returns dP/dt.
+template <typename T>
+T Plant::open_chamber_rates(const T& P, const T& Tc, const T& V, const T& dV, const T& W_in,
+                            const T& H_in, const T& A_wall, T& dTc) const {
+  const double kap = kappa_;
+  const T Q = thermal_.heat_transfer_W_per_m2K * A_wall * (thermal_.wall_temperature_K - Tc);
+  const T dP = kap * R_ / V * H_in + (kap - 1.0) / V * Q - kap * P / V * dV;
+  dTc = Tc * (dP / P + dV / V - W_in * R_ * Tc / (P * V));
+  return dP;
+}
+
+// Both chambers with the energy equation. The valves' flows were sized for supply-temperature
+// air upstream; air leaving a chamber at T passes sqrt(T_supply / T) times as much (the
+// 1/sqrt(R T_up) of the nozzle law), and carries its own temperature out.
+template <typename T>
+void Plant::chamber_energy_rates(std::span<const T> x, std::span<T> dxdt) const {
+  using std::sqrt;
+  const auto& L = layout_;
+  const T& T1 = x[L.T1];
+  const T& T2 = x[L.T2];
+  T W1 = valve1_->mass_flow(T(supply_Pa_), x[L.P1]);
+  T H1 = W1 * T_supply_;
+  if (W1 < 0.0) {  // back-flow out of chamber 1
+    W1 = W1 * sqrt(T_supply_ / T1);
+    H1 = W1 * T1;
+  }
+  T W2 = valve2_->mass_flow(x[L.P2], T(ambient_Pa_));
+  T H2 = -W2 * T_supply_;  // reversed: atmosphere (at the supply temperature) flows in
+  if (W2 >= 0.0) {
+    W2 = W2 * sqrt(T_supply_ / T2);
+    H2 = -W2 * T2;
+  }
+  const T V1 = geometry_.volume_head_m3(x[L.x]);
+  const T V2 = geometry_.volume_rod_m3(x[L.x]);
+  dxdt[L.P1] = open_chamber_rates(x[L.P1], T1, V1, T(A1_ * x[L.v]), W1, H1,
+                                  geometry_.wall_area_head_m2(V1), dxdt[L.T1]);
+  dxdt[L.P2] = open_chamber_rates(x[L.P2], T2, V2, T(-A2_ * x[L.v]), T(-W2), H2,
+                                  geometry_.wall_area_rod_m2(V2), dxdt[L.T2]);
+}
+
 template <typename T>
 void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) const {
   using namespace plant_detail;
   const auto& L = layout_;
-  dxdt[L.P1] = head_chamber_rate(x);
-  dxdt[L.P2] = rod_chamber_rate(x);
+  if (L.has_temperatures()) {
+    chamber_energy_rates(x, dxdt);
+  } else {
+    dxdt[L.P1] = head_chamber_rate(x);
+    dxdt[L.P2] = rod_chamber_rate(x);
+  }
 
   const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
                         std::size_t nz, double mass) {

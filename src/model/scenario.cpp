@@ -22,6 +22,11 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
                             "Fc = {} N ({}Fc_N)",
                             f.static_N, f.coulomb_N, prefix));
   }
+  if (f.memory == FrictionMemory::kLag && f.kind != FrictionKind::kStribeck) {
+    throw Error(prefix + "memory", fmt::format("the lag acts on the Stribeck drop: needs {}model "
+                                               "= \"stribeck\", not \"{}\"",
+                                               prefix, friction_kind_name(f.kind)));
+  }
   if (f.kind != FrictionKind::kClassic && f.static_gain_N_per_Pa < f.coulomb_gain_N_per_Pa) {
     throw Error(prefix + "Fs_gain_N_per_MPa",
                 "must be >= " + prefix + "Fc_gain_N_per_MPa so that Fs >= Fc at every pressure");

@@ -113,6 +113,12 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
   keys.push_back(number(
       prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  keys.push_back(word<FrictionMemory>(
+      prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
+      {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
+  keys.push_back(number(
+      prefix + "lag_time_ms", "ms", "time constant of the Stribeck drop's lag (memory = lag)", 1e-3,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).lag_time_s; }));
   keys.push_back(number(
       prefix + "Fc_gain_N_per_MPa", "N/MPa",
       "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
@@ -159,11 +165,23 @@ std::vector<KeySpec> build_keys() {
       "gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
       [](auto& s) -> auto& { return s.gas.R_J_per_kgK; }));
   k.push_back(number(
-      "gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law", 1.0,
+      "gas.heat_capacity_ratio", "-", "cp/cv of air, used by the valve flow law and the energy equation", 1.0,
       Range{1.0, 1.67, true, false}, [](auto& s) -> auto& { return s.gas.heat_capacity_ratio; }));
   k.push_back(number(
       "gas.polytropic_exponent", "-", "k of the chamber equations: 1.4 adiabatic, 1.0 isothermal",
       1.0, Range{1.0, 1.67}, [](auto& s) -> auto& { return s.polytropic_exponent; }));
+  k.push_back(word<ChamberModel>(
+      "thermal.chamber_model",
+      "polytropic: eqs. (2)-(3) with gas.polytropic_exponent; energy: chamber temperatures as "
+      "states with wall heat transfer",
+      {"polytropic", "energy"}, [](auto& s) -> auto& { return s.thermal.chamber_model; }));
+  k.push_back(number(
+      "thermal.heat_transfer_W_per_m2K", "W/(m^2*K)",
+      "wall heat-transfer coefficient h (chamber_model = energy)", 1.0, kNonNegative,
+      [](auto& s) -> auto& { return s.thermal.heat_transfer_W_per_m2K; }));
+  k.push_back(number(
+      "thermal.wall_temperature_K", "K", "cylinder wall temperature (chamber_model = energy)",
+      1.0, kPositive, [](auto& s) -> auto& { return s.thermal.wall_temperature_K; }));
   k.push_back(number(
       "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.cylinder.bore_m; }));

@@ -61,6 +61,10 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
       ts.add_channel(L.entries[L.guide_z + i].name, L.entries[L.guide_z + i].unit);
     }
   }
+  if (L.has_temperatures()) {
+    ts.add_channel("T1", "K");
+    ts.add_channel("T2", "K");
+  }
   ts.add_channel("stuck", "-");
 
   std::vector<double> row;
@@ -73,6 +77,7 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
       row.insert(row.end(), {x[L.load_x], x[L.load_v], out.guide_friction_N});
       for (std::size_t i = 0; i < L.guide_z_count; ++i) row.push_back(x[L.guide_z + i]);
     }
+    if (L.has_temperatures()) row.insert(row.end(), {x[L.T1], x[L.T2]});
     row.push_back(out.piston_stuck ? 1.0 : 0.0);
     ts.append(row);
   };

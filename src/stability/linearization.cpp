@@ -17,6 +17,10 @@ ReducedLayout reduced_layout(const Plant& plant) {
   if (L.seal_z_count > 1 || L.guide_z_count > 1) {
     throw Error("friction.model", "the linearization supports at most one internal friction state");
   }
+  if (L.has_temperatures()) {
+    throw Error("thermal.chamber_model",
+                "the linearization does not include the chamber temperatures yet; use polytropic");
+  }
   ReducedLayout r;
   if (L.seal_z_count == 1) r.z = r.size++;
   if (L.has_load_body()) {

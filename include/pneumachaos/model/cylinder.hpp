@@ -31,6 +31,19 @@ struct CylinderGeometry {
     }
     return dead_volume_rod_m3 + area_rod_m2() * (stroke_m - x_m);
   }
+  /// Wetted wall of a chamber of volume V (docs/model.md, "Chamber temperatures"): its two
+  /// end faces plus the barrel (and rod) over the length V / A the volume would fill, so the
+  /// dead volume counts as more barrel.
+  template <typename T>
+  [[nodiscard]] T wall_area_head_m2(const T& V_m3) const {
+    return 2.0 * area_head_m2() + head_perimeter_m() * V_m3 / area_head_m2();
+  }
+  template <typename T>
+  [[nodiscard]] T wall_area_rod_m2(const T& V_m3) const {
+    return 2.0 * area_rod_m2() + rod_perimeter_m() * V_m3 / area_rod_m2();
+  }
+  [[nodiscard]] double head_perimeter_m() const;  ///< pi bore
+  [[nodiscard]] double rod_perimeter_m() const;   ///< pi (bore + rod): barrel and rod
 };
 
 }  // namespace pneumachaos

@@ -10,6 +10,10 @@ namespace pneumachaos {
 
 enum class FrictionKind { kClassic, kStribeck, kLuGre };
 
+/// Frictional memory of the stribeck model: kLag makes the Stribeck drop follow the velocity
+/// with a first-order lag (Hess & Soom 1990; docs/model.md, "Friction").
+enum class FrictionMemory { kNone, kLag };
+
 /// One sinusoidal component of a friction texture along the bore: the friction levels are
 /// multiplied by 1 + sum(amplitude * sin(wavenumber * x + phase)).
 struct TextureMode {
@@ -34,6 +38,12 @@ struct FrictionParams {
   double static_gain_N_per_Pa = 0.0;
   /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
   std::vector<TextureMode> texture;
+  FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
+  /// Time constant of the Stribeck drop's lag behind the velocity (memory = kLag).
+  double lag_time_s = 0.005;
+  [[nodiscard]] bool lagged() const {
+    return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
+  }
 };
 
 /// What a friction model sees of the plant, in the scalar type of the evaluation (double,
@@ -53,6 +63,12 @@ class FrictionModel {
 
   /// Internal states carried in the ODE state (LuGre: bristle deflection z [m]).
   [[nodiscard]] virtual std::size_t state_count() const { return 0; }
+  /// Name, unit and typical magnitude of the internal states (LuGre: z, m, 1 um).
+  [[nodiscard]] virtual const char* state_name() const { return "z"; }
+  [[nodiscard]] virtual const char* state_unit() const { return "m"; }
+  [[nodiscard]] virtual double state_scale() const { return 1e-6; }
+  /// The internal states after a long rest (the start of a run): zero unless overridden.
+  virtual void rest_state(std::span<double> z) const;
   /// True stiction: the contact may be stuck with v held at exactly 0 (classic, stribeck).
   [[nodiscard]] virtual bool has_stiction() const = 0;
 

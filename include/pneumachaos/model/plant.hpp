@@ -67,7 +67,7 @@ class Plant final : public HybridSystem {
   [[nodiscard]] double ambient_pressure_Pa() const { return ambient_Pa_; }
   [[nodiscard]] double supply_pressure_Pa() const { return supply_Pa_; }  ///< absolute
   [[nodiscard]] double polytropic_exponent() const { return polytropic_exponent_; }
-  /// R T of the air [J/kg]: chambers and supply share one temperature (no energy equation).
+  /// R T of the supply air [J/kg]; the chambers' too unless the energy equation is on.
   [[nodiscard]] double RT_J_per_kg() const { return RT_; }
   [[nodiscard]] const CylinderGeometry& geometry() const { return geometry_; }
   [[nodiscard]] const LoadParams& load() const { return load_; }
@@ -121,6 +121,12 @@ class Plant final : public HybridSystem {
   template <typename T>
   [[nodiscard]] T rod_chamber_rate(std::span<const T> x) const;
   template <typename T>
+  void chamber_energy_rates(std::span<const T> x, std::span<T> dxdt) const;
+  template <typename T>
+  [[nodiscard]] T open_chamber_rates(const T& P, const T& Tc, const T& V, const T& dV,
+                                     const T& W_in, const T& H_in, const T& A_wall,
+                                     T& dTc) const;
+  template <typename T>
   [[nodiscard]] T drive_force(std::size_t contact, std::span<const T> x) const;
   template <typename T>
   [[nodiscard]] BasicFrictionInput<T> friction_input(std::size_t contact,
@@ -141,6 +147,10 @@ class Plant final : public HybridSystem {
   double supply_Pa_ = 0.0;
   double polytropic_exponent_ = 0.0;
   double RT_ = 0.0;
+  ThermalParams thermal_;
+  double kappa_ = 1.4;     // cp/cv, the energy equation's exponent
+  double R_ = 287.0;       // specific gas constant
+  double T_supply_ = 0.0;  // supply and atmosphere temperature: what flows in
   StateLayout layout_;
   std::unique_ptr<FrictionModel> seal_;
   std::unique_ptr<FrictionModel> guide_;

@@ -50,6 +50,21 @@ struct VariationParams {
   double sensor_noise_m_per_s = 0.0;   ///< sd of white noise added to the sampled velocity
 };
 
+enum class ChamberModel {
+  kPolytropic,  ///< eqs. (2)-(3) with exponent k, one temperature everywhere (the paper's model)
+  kEnergy,      ///< temperatures T1, T2 as states, wall heat transfer (docs/model.md)
+};
+
+/// The chamber energy equation (docs/model.md, "Chamber temperatures"). Off by default, so
+/// that the paper's eqs. (2)-(3) stay the model unless asked for.
+struct ThermalParams {
+  ChamberModel chamber_model = ChamberModel::kPolytropic;
+  /// h of the wall heat flow h A_wall (T_wall - T): free to forced convection of a gas,
+  /// order 2-250 W/(m^2 K) (docs/model.md gives the range and why 20).
+  double heat_transfer_W_per_m2K = 20.0;
+  double wall_temperature_K = 293.15;  ///< cylinder wall, taken constant (large heat capacity)
+};
+
 struct RunParams {
   double duration_s = 10.0;
   double sample_rate_Hz = 1000.0;
@@ -71,6 +86,7 @@ struct Scenario {
   FrictionParams friction;
   LoadParams load;
   VariationParams variation;
+  ThermalParams thermal;
   RunParams run;
 
   [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }

@@ -21,6 +21,8 @@ struct StateLayout {
   std::size_t load_v = kNone;   ///< load velocity [m/s]
   std::size_t guide_z = kNone;  ///< first internal state of the guide friction model
   std::size_t guide_z_count = 0;
+  std::size_t T1 = kNone;  ///< head-side temperature [K] (energy equation only)
+  std::size_t T2 = kNone;  ///< rod-side temperature [K]
   std::size_t size = 4;
 
   struct Entry {
@@ -32,6 +34,7 @@ struct StateLayout {
   /// Appends `count` states named name, name2, ...; returns the index of the first.
   std::size_t append(const std::string& name, const std::string& unit, std::size_t count = 1);
   [[nodiscard]] bool has_load_body() const { return load_x != kNone; }
+  [[nodiscard]] bool has_temperatures() const { return T1 != kNone; }
 };
 
 }  // namespace pneumachaos
