@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 cmake --preset fuzz -DPNEUMACHAOS_FUZZ_SECONDS="${PNEUMACHAOS_FUZZ_SECONDS:-60}" >/dev/null
-cmake --build --preset fuzz -j "$(nproc)"
+cmake --build --preset fuzz -j "$(nproc)" --target fuzzers
 label=fuzz
 [ "${1:-}" = "long" ] && label=fuzz_long
 # The harnesses run one at a time: each uses one core, and 2-core machines also build.
