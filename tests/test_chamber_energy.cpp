@@ -9,6 +9,7 @@
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "stuck_samples.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -155,20 +156,11 @@ TEST(ChamberEnergy, StictionStillHoldsTheVelocityAtExactlyZero) {
   const auto r = simulate(plant, SimulationOptions::from(s.run));
   ASSERT_TRUE(r.summary.ok()) << r.summary.message;
   EXPECT_GE(r.summary.events.stick, 3u);
-  const auto& x = r.series.channel("x").values;
-  const auto& v = r.series.channel("v").values;
   const auto& T2 = r.series.channel("T2").values;
-  const auto& stuck = r.series.channel("stuck").values;
-  std::size_t stuck_samples = 0;
   double largest_T2_change = 0.0;
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    if (stuck[i] == 1.0 && stuck[i - 1] == 1.0 && x[i] > 0.0) {
-      ++stuck_samples;
-      EXPECT_EQ(v[i], 0.0);
-      EXPECT_EQ(x[i], x[i - 1]);
-      largest_T2_change = std::max(largest_T2_change, std::abs(T2[i] - T2[i - 1]));
-    }
-  }
+  const std::size_t stuck_samples = for_each_stuck_sample(r.series, [&](std::size_t i) {
+    largest_T2_change = std::max(largest_T2_change, std::abs(T2[i] - T2[i - 1]));
+  });
   EXPECT_GT(stuck_samples, 100u);
   EXPECT_GT(largest_T2_change, 1e-4);  // K per ms: the exhausting chamber cools while stuck
 }
