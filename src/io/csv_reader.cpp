@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -35,8 +36,7 @@ std::vector<std::string> split(const std::string& line, bool commas) {
     while (in >> field) fields.push_back(trim(field));
     return fields;
   }
-  while (std::getline(in, field, ',')) fields.push_back(trim(field));
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  for (const std::string& f : split_csv_fields(line)) fields.push_back(trim(f));
   return fields;
 }
 
@@ -209,6 +209,15 @@ double rate_from_times(const std::vector<double>& times, const std::string& orig
 }
 
 }  // namespace
+
+std::vector<std::string> split_csv_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
 
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -47,11 +48,7 @@ std::string RunRecord::encode() const {
 }
 
 RunRecord RunRecord::decode(const std::string& line) {
-  std::vector<std::string> f;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) f.push_back(field);
-  if (!line.empty() && line.back() == ',') f.emplace_back();
+  const std::vector<std::string> f = split_csv_fields(line);
   if (f.size() != kFields)
     throw Error("journal", fmt::format("a record has {} fields, expected {}", f.size(), kFields));
   RunRecord r;
