@@ -1,7 +1,6 @@
 #include <fmt/format.h>
 
 #include <charconv>
-#include <sstream>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_fields.hpp"
