@@ -46,13 +46,16 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "virtual rig. " +
       escape(settings) +
       "</p>\n<h2>The paper's claims against our numbers</h2>\n"
-      "<table><tr><th>claim</th><th>paper</th><th>ours</th><th>verdict</th><th>rule</th></tr>\n";
+      "<table><tr><th>claim</th><th>paper</th><th>ours</th><th>verdict</th><th>rule</th><th>figure</th></tr>\n";
   for (const Claim& c : claims) {
     const std::string cls =
         c.verdict == "agrees" ? "agrees" : (c.verdict == "disagrees" ? "disagrees" : "not");
     h += fmt::format(
-        "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td><td>{}</td></tr>\n",
-        cls, escape(c.claim), escape(c.paper), escape(c.ours), escape(c.verdict), escape(c.rule));
+        "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td><td>{}</td><td>{}</td>"
+        "</tr>\n",
+        cls, escape(c.claim), escape(c.paper), escape(c.ours), escape(c.verdict), escape(c.rule),
+        c.figure.empty() ? std::string("&ndash;")
+                         : fmt::format("<a href=\"#{0}\">{0}</a>", escape(c.figure)));
   }
   h += "</table>\n<h2>Figures</h2>\n<p>Each figure's data, its gnuplot commands "
        "(<code>NAME_plot.gp</code>) and the driver that renders PNG and SVG "

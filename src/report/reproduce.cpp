@@ -3,12 +3,16 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/figures.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
@@ -28,6 +32,9 @@ class Stages {
   int total_, done_ = 0;
 };
 
+// The chaotic example starts at rest; its analysis and Fig. 7 skip the start-up.
+constexpr double kSettle_s = 2.0;
+
 SimulationResult run(Scenario s, double duration_s) {
   s.run.duration_s = duration_s;
   const Plant plant(s);
@@ -44,6 +51,50 @@ Scenario paper_model(CircuitKind kind, double S1_mm2, double S2_mm2) {
   s.circuit.S1_m2 = S1_mm2 * 1e-6;
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
   return s;
+}
+
+// Fig. 2 reduced to the claim's numbers: the settled part starts after 1 s of the 3 s records.
+CircuitContrast contrast(const std::vector<LabelledRecord>& in,
+                         const std::vector<LabelledRecord>& out) {
+  CircuitContrast c;
+  const auto add = [](const LabelledRecord& r, std::vector<double>& fl, std::vector<double>& mean) {
+    const auto& v = r.series.channel("v").values;
+    const auto from = static_cast<std::size_t>(r.series.rate_Hz());
+    fl.push_back(relative_fluctuation(v, from));
+    double sum = 0.0;
+    for (std::size_t k = from; k < v.size(); ++k) sum += v[k];
+    mean.push_back(from < v.size() ? sum / (v.size() - from) : 0.0);
+  };
+  for (const auto& r : in) add(r, c.meter_in_fluctuation, c.meter_in_mean);
+  for (const auto& r : out) add(r, c.meter_out_fluctuation, c.meter_out_mean);
+  return c;
+}
+
+std::optional<DampingChange> damping_change(const Scenario& before, const Scenario& after) {
+  const StabilityResult b = analyze_stability(Plant(before));
+  const StabilityResult a = analyze_stability(Plant(after));
+  if (!b.has_equilibrium() || !a.has_equilibrium()) return std::nullopt;
+  return DampingChange{b.paper.a1, a.paper.a1, b.paper.b1, a.paper.b1, b.max_real_part_per_s,
+                       a.max_real_part_per_s};
+}
+
+// The paper's sign verdict per point against the runs of the same point (same grid order).
+SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& sweep) {
+  SignRuleCounts c;
+  for (std::size_t i = 0; i < map.points.size() && i < sweep.per_point.size(); ++i) {
+    const StabilityResult& r = map.points[i].result;
+    if (!map.points[i].error.empty() || !r.has_equilibrium()) continue;
+    // regime_incidence[0] is "steady" (sweep_regime_names()).
+    const bool steady = sweep.per_point[i].regime_incidence.at(0) >= 0.5;
+    if (r.paper.verdict == StabilityVerdict::kDamped) {
+      ++c.damped;
+      c.damped_steady += steady ? 1 : 0;
+    } else {
+      ++c.excited;
+      c.excited_moving += steady ? 0 : 1;
+    }
+  }
+  return c;
 }
 
 }  // namespace
@@ -73,7 +124,10 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   stage.next("Fig. 7: the chaotic example and its indices");
   const Scenario base = default_scenario();
   const SimulationResult example = run(base, record_s);
-  const auto& v = example.series.channel("v").values;
+  // The settled record: the first kSettle_s (rest and start-up) are left out of the analysis.
+  const auto& v_all = example.series.channel("v").values;
+  const auto settle = static_cast<std::size_t>(kSettle_s * example.series.rate_Hz());
+  const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
   const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
   ModelLyapunovOptions lo;
   lo.measure_s = o.quick ? 10.0 : 40.0;
@@ -102,7 +156,8 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   if (o.quick) spec.base.run.duration_s = 5.0;
 
   stage.next("stability map");
-  add(stability_map_figure(stability_map(base, spec.axes)));
+  const StabilityMap smap = stability_map(base, spec.axes);
+  add(stability_map_figure(smap));
 
   struct Condition {
     std::string name, title, key;
@@ -140,6 +195,25 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
     ci.example_uncertainty = a.divergence.uncertainty_per_s;
   }
   if (model.ok) ci.example_model_lambda = model.lambda_per_s;
+  ci.example_chaotic = a.verdict.chaotic;
+  ci.example_peak_share = a.spectrum.peak_share;
+  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
+  ci.fig2 = contrast(in, out);
+  // Low speed: up to a quarter of the example's largest speed.
+  double vmax = 0.0;
+  for (double x : v) vmax = std::max(vmax, x);
+  ci.friction_slope_vmax = 0.25 * vmax;
+  ci.friction_slope = low_speed_slope(
+      v, std::vector<double>(example.series.channel("F_friction").values.begin() +
+                                 static_cast<std::ptrdiff_t>(settle),
+                             example.series.channel("F_friction").values.end()),
+      ci.friction_slope_vmax);
+  Scenario high_ps = base, heavy = base;
+  apply_setting(high_ps, "supply.pressure_MPa", 0.30, "reproduce");
+  apply_setting(heavy, "load.mass_kg", 3.0, "reproduce");
+  ci.higher_ps = damping_change(base, high_ps);
+  ci.heavier = damping_change(base, heavy);
+  ci.sign_rule = sign_rule_counts(smap, maps[0]);
   result.claims = evaluate_claims(ci);
   const std::string settings = fmt::format(
       "{} grid ({} x {} points), {} runs per point, {} s records, 3 % friction variation and a "
