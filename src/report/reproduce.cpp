@@ -13,6 +13,7 @@
 #include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/figures.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"
+#include "progress.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
@@ -20,17 +21,21 @@
 namespace pneumachaos {
 namespace {
 
-class Stages {
- public:
-  Stages(bool show, int total) : show_(show && ::isatty(STDERR_FILENO) != 0), total_(total) {}
-  void next(const std::string& what) {
-    if (show_) fmt::print(stderr, "reproduce: [{}/{}] {}\n", ++done_, total_, what);
+// An --out that exists must be empty or hold an earlier report (its page, figures or the
+// sweeps of an interrupted run): anything else is refused rather than mixed with the report.
+void check_out_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw Error(dir, "--out exists and is not a directory");
+  if (fs::is_empty(dir, ec)) return;
+  for (const char* mark : {"index.html", "figures", "sweeps"}) {
+    if (fs::exists(fs::path(dir) / mark, ec)) return;
   }
-
- private:
-  bool show_;
-  int total_, done_ = 0;
-};
+  throw Error(dir,
+              "--out exists and is not an earlier report (no index.html, figures/ or sweeps/); "
+              "choose a new or empty directory");
+}
 
 // The chaotic example starts at rest; its analysis and Fig. 7 skip the start-up.
 constexpr double kSettle_s = 2.0;
@@ -78,6 +83,16 @@ std::optional<DampingChange> damping_change(const Scenario& before, const Scenar
                        a.max_real_part_per_s};
 }
 
+// The seal's steady friction-velocity curve from 0.5 mm/s to v_max, at the rig's pressure
+// gains' zero point (gauge sum 0; the default rig has no pressure dependence).
+std::vector<std::array<double, 2>> steady_curve(const Plant& plant, double v_max) {
+  std::vector<std::array<double, 2>> c;
+  for (double v = 0.5e-3; v <= v_max; v += 0.5e-3) {
+    c.push_back({v, plant.seal_friction().steady_force_N(FrictionInput{v, 0.0, 0.0})});
+  }
+  return c;
+}
+
 // The paper's sign verdict per point against the runs of the same point (same grid order).
 SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& sweep) {
   SignRuleCounts c;
@@ -100,51 +115,19 @@ SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& swe
 }  // namespace
 
 ReproduceResult reproduce(const ReproduceOptions& o) {
+  check_out_dir(o.out_dir);
   const std::string fig_dir = o.out_dir + "/figures";
   std::error_code ec;
   std::filesystem::create_directories(fig_dir, ec);
   if (ec) throw Error(o.out_dir, "cannot create the report directory: " + ec.message());
-  Stages stage(o.progress, 9);
   ReproduceResult result;
   const auto add = [&](const FigureSpec& spec) {
     result.figures.push_back(render_figure(spec, fig_dir));
   };
   const double record_s = o.quick ? 10.0 : 30.0;
 
-  stage.next("Fig. 2: time responses of the paper's model");
-  std::vector<LabelledRecord> in, out;
-  for (double S : {0.2, 0.35, 0.6}) {
-    in.push_back({fmt::format("S1 = {} mm^2", S),
-                  run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
-    out.push_back({fmt::format("S2 = {} mm^2", S),
-                   run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
-  }
-  add(time_responses_figure(in, out));
-
-  stage.next("Fig. 7: the chaotic example and its indices");
-  const Scenario base = default_scenario();
-  const SimulationResult example = run(base, record_s);
-  // The settled record: the first kSettle_s (rest and start-up) are left out of the analysis.
-  const auto& v_all = example.series.channel("v").values;
-  const auto settle = static_cast<std::size_t>(kSettle_s * example.series.rate_Hz());
-  const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
-  const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
-  ModelLyapunovOptions lo;
-  lo.measure_s = o.quick ? 10.0 : 40.0;
-  const ModelLyapunovResult model = plant_lyapunov(Plant(base), base.run, lo);
-  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), a, model.running_time_s,
-                                               model.running_per_s)) {
-    add(f);
-  }
-
-  stage.next("Fig. 3: friction-velocity loops");
-  Scenario stick = base;
-  stick.circuit.S2_m2 = 0.05e-6;
-  add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example.series},
-                             {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
-                            o.quick ? 1.0 : 2.0));
-
   // The maps' grid and run-to-run variation (docs/virtual_rig.md).
+  const Scenario base = default_scenario();
   SweepSpec spec;
   spec.base = base;
   spec.base.variation.friction_rel_sd = 0.03;
@@ -154,8 +137,42 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
                       : paper_valve_grid();
   spec.repeats = o.quick ? 2 : 5;
   if (o.quick) spec.base.run.duration_s = 5.0;
+  ReproduceProgress stage(o.progress, 9, 4 * spec.runs());
 
-  stage.next("stability map");
+  stage.stage("Fig. 2: time responses of the paper's model");
+  std::vector<LabelledRecord> in, out;
+  for (double S : {0.2, 0.35, 0.6}) {
+    in.push_back({fmt::format("S1 = {} mm^2", S),
+                  run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
+    out.push_back({fmt::format("S2 = {} mm^2", S),
+                   run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
+  }
+  add(time_responses_figure(in, out));
+
+  stage.stage("Fig. 7: the chaotic example and its indices");
+  const SimulationResult example = run(base, record_s);
+  // The settled record: the first kSettle_s (rest and start-up) are left out of the analysis.
+  const auto& v_all = example.series.channel("v").values;
+  const auto settle = static_cast<std::size_t>(kSettle_s * example.series.rate_Hz());
+  const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
+  const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
+  ModelLyapunovOptions lo;
+  lo.measure_s = o.quick ? 10.0 : 40.0;
+  const ModelLyapunovResult model = plant_lyapunov(Plant(base), base.run, lo);
+  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), kSettle_s, a,
+                                               model.running_time_s,
+                                               model.running_per_s)) {
+    add(f);
+  }
+
+  stage.stage("Fig. 3: friction-velocity loops");
+  Scenario stick = base;
+  stick.circuit.S2_m2 = 0.05e-6;
+  add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example.series},
+                             {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
+                            o.quick ? 1.0 : 2.0, steady_curve(Plant(base), 0.2)));
+
+  stage.stage("stability map");
   const StabilityMap smap = stability_map(base, spec.axes);
   add(stability_map_figure(smap));
 
@@ -170,7 +187,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
       {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg", 4.5}};
   std::vector<SweepSummary> maps;
   for (const Condition& c : conditions) {
-    stage.next("sweep: " + c.title);
+    stage.stage("sweep: " + c.title);
     SweepSpec s = spec;
     if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
     SweepOptions so;
@@ -180,10 +197,11 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
     // A second run of reproduce resumes (or re-reads) the sweeps of the first.
     so.resume = true;
     maps.push_back(run_sweep(s, so));
+    stage.runs_done(s.runs());
     add(incidence_map_figure(c.name, c.title, s, maps.back()));
   }
 
-  stage.next("claims and report");
+  stage.stage("claims and report");
   ClaimInputs ci;
   ci.spec = spec;
   ci.base = maps[0];
