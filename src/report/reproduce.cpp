@@ -112,6 +112,47 @@ SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& swe
   return c;
 }
 
+// The maps' grid and run-to-run variation (docs/virtual_rig.md).
+SweepSpec map_spec(const Scenario& base, bool quick) {
+  SweepSpec spec;
+  spec.base = base;
+  spec.base.variation.friction_rel_sd = 0.03;
+  spec.base.variation.texture_rel = 0.02;
+  spec.axes = quick ? std::vector<GridAxis>{parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
+                                            parse_grid_axis("circuit.S2_mm2=0.05:0.95:0.15")}
+                    : paper_valve_grid();
+  spec.repeats = quick ? 2 : 5;
+  if (quick) spec.base.run.duration_s = 5.0;
+  return spec;
+}
+
+// The Fig. 7 and Fig. 3 numbers of the claims, from the settled record v (which starts at
+// sample `settle` of the full friction channel F).
+void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vector<double>& v,
+                        const std::vector<double>& F, std::size_t settle) {
+  if (a.divergence.found_linear_region) {
+    ci.example_lambda = a.divergence.lambda_per_s;
+    ci.example_uncertainty = a.divergence.uncertainty_per_s;
+  }
+  ci.example_chaotic = a.verdict.chaotic;
+  ci.example_peak_share = a.spectrum.peak_share;
+  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
+  // Low speed: up to a quarter of the example's largest speed.
+  const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+  ci.friction_slope_vmax = 0.25 * vmax;
+  const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(settle), F.end());
+  ci.friction_slope = low_speed_slope(v, F_settled, ci.friction_slope_vmax);
+}
+
+// The conclusion's Fig. 5 and Fig. 6 changes at the example point, by the linear analysis.
+void add_damping_inputs(ClaimInputs& ci, const Scenario& base) {
+  Scenario high_ps = base, heavy = base;
+  apply_setting(high_ps, "supply.pressure_MPa", 0.30, "reproduce");
+  apply_setting(heavy, "load.mass_kg", 3.0, "reproduce");
+  ci.higher_ps = damping_change(base, high_ps);
+  ci.heavier = damping_change(base, heavy);
+}
+
 }  // namespace
 
 ReproduceResult reproduce(const ReproduceOptions& o) {
@@ -126,17 +167,8 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   };
   const double record_s = o.quick ? 10.0 : 30.0;
 
-  // The maps' grid and run-to-run variation (docs/virtual_rig.md).
   const Scenario base = default_scenario();
-  SweepSpec spec;
-  spec.base = base;
-  spec.base.variation.friction_rel_sd = 0.03;
-  spec.base.variation.texture_rel = 0.02;
-  spec.axes = o.quick ? std::vector<GridAxis>{parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
-                                              parse_grid_axis("circuit.S2_mm2=0.05:0.95:0.15")}
-                      : paper_valve_grid();
-  spec.repeats = o.quick ? 2 : 5;
-  if (o.quick) spec.base.run.duration_s = 5.0;
+  const SweepSpec spec = map_spec(base, o.quick);
   ReproduceProgress stage(o.progress, 9, 4 * spec.runs());
 
   stage.stage("Fig. 2: time responses of the paper's model");
@@ -208,29 +240,10 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   ci.high_ps = maps[1];
   ci.double_m = maps[2];
   ci.triple_m = maps[3];
-  if (a.divergence.found_linear_region) {
-    ci.example_lambda = a.divergence.lambda_per_s;
-    ci.example_uncertainty = a.divergence.uncertainty_per_s;
-  }
+  add_example_inputs(ci, a, v, example.series.channel("F_friction").values, settle);
   if (model.ok) ci.example_model_lambda = model.lambda_per_s;
-  ci.example_chaotic = a.verdict.chaotic;
-  ci.example_peak_share = a.spectrum.peak_share;
-  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
   ci.fig2 = contrast(in, out);
-  // Low speed: up to a quarter of the example's largest speed.
-  double vmax = 0.0;
-  for (double x : v) vmax = std::max(vmax, x);
-  ci.friction_slope_vmax = 0.25 * vmax;
-  ci.friction_slope = low_speed_slope(
-      v, std::vector<double>(example.series.channel("F_friction").values.begin() +
-                                 static_cast<std::ptrdiff_t>(settle),
-                             example.series.channel("F_friction").values.end()),
-      ci.friction_slope_vmax);
-  Scenario high_ps = base, heavy = base;
-  apply_setting(high_ps, "supply.pressure_MPa", 0.30, "reproduce");
-  apply_setting(heavy, "load.mass_kg", 3.0, "reproduce");
-  ci.higher_ps = damping_change(base, high_ps);
-  ci.heavier = damping_change(base, heavy);
+  add_damping_inputs(ci, base);
   ci.sign_rule = sign_rule_counts(smap, maps[0]);
   result.claims = evaluate_claims(ci);
   const std::string settings = fmt::format(
