@@ -2,11 +2,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
+#include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 
 namespace pneumachaos {
@@ -52,7 +54,8 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
     ++links;
   }
   EXPECT_GE(links, 11u * 4);  // image, SVG, script and data of each figure
-  EXPECT_EQ(r.claims.size(), 6u);
+  EXPECT_EQ(r.claims.size(), 13u);
+  EXPECT_NE(html.find("<th>figure</th>"), std::string::npos);
   for (const Claim& c : r.claims) EXPECT_NE(html.find(c.verdict), std::string::npos);
   std::filesystem::remove_all(dir);
 }
@@ -73,8 +76,9 @@ TEST(Claims, FollowTheSweepResults) {
   in.triple_m = map_with(52, 5, 49);
   in.example_lambda = 2.7;
   in.example_uncertainty = 0.3;
+  in.example_chaotic = true;
   auto claims = evaluate_claims(in);
-  ASSERT_EQ(claims.size(), 6u);
+  ASSERT_EQ(claims.size(), 13u);
   EXPECT_EQ(claims[1].verdict, "agrees");     // 32 -> 26: -19 %
   EXPECT_EQ(claims[2].verdict, "agrees");     // 11 -> 0
   EXPECT_EQ(claims[3].verdict, "agrees");     // 32 -> 37, 8 always chaotic
@@ -90,8 +94,97 @@ TEST(Claims, FollowTheSweepResults) {
   EXPECT_EQ(claims[2].verdict, "disagrees");
   EXPECT_EQ(claims[4].verdict, "agrees");
   EXPECT_EQ(claims[5].verdict, "disagrees");
+  in.example_uncertainty = 0.3;
+  in.example_chaotic = false;  // a periodic record's curve can rise too
+  EXPECT_EQ(evaluate_claims(in)[5].verdict, "disagrees");
   in.high_ps.reset();
   EXPECT_EQ(evaluate_claims(in)[1].verdict, "not reproduced");
+}
+
+// A column of a map (S2 fastest) from stick-slip and chaos incidences.
+std::vector<PointSummary> column(const std::vector<double>& stick, const std::vector<double>& chaos) {
+  std::vector<PointSummary> pts(stick.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    pts[i].point = i;
+    pts[i].stick_slip_incidence = stick[i];
+    pts[i].chaos_incidence = chaos[i];
+  }
+  return pts;
+}
+
+TEST(ClaimRules, ChaosNearTheBorderFailsForChaosFarFromIt) {
+  // Stick-slip in the first two S2 rows; chaos right above them: near the border.
+  const std::vector<double> stick = {1, 1, 0, 0, 0, 0, 0, 0, 0, 0};
+  auto near = chaos_location(column(stick, {0, 0, 1, 0, 0, 0, 0, 0, 0, 0}), 10);
+  EXPECT_DOUBLE_EQ(near.near_border, 1.0);
+  EXPECT_TRUE(chaos_near_border(near));
+  // The same amount of chaos high up the S2 axis (every S1 > S2 still): far from the border.
+  auto far = chaos_location(column(stick, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0}), 10);
+  EXPECT_DOUBLE_EQ(far.near_border, 0.0);
+  EXPECT_FALSE(chaos_near_border(far));
+  // Chaos near the border but over most of the map: not a limited region.
+  auto wide = chaos_location(column(stick, {1, 1, 1, 1, 1, 1, 0, 0, 0, 0}), 10);
+  EXPECT_FALSE(chaos_near_border(wide));
+}
+
+TEST(ClaimRules, ExponentNeedsAChaoticRecord) {
+  EXPECT_TRUE(positive_exponent_of_chaos(3.0, 0.5, true));
+  EXPECT_FALSE(positive_exponent_of_chaos(3.0, 0.5, false));  // periodic, curve rising anyway
+  EXPECT_FALSE(positive_exponent_of_chaos(3.0, 1.5, true));
+}
+
+TEST(ClaimRules, AcfOfASineDoesNotConvergeButNoiseDoes) {
+  const double rate = 100.0;
+  std::vector<double> sine(500), decaying(500);
+  for (std::size_t k = 0; k < sine.size(); ++k) {
+    sine[k] = std::cos(2 * M_PI * 6.3 * k / rate);
+    decaying[k] = std::exp(-5.0 * k / rate) * std::cos(2 * M_PI * 6.3 * k / rate);
+  }
+  EXPECT_FALSE(acf_converged(acf_envelope_after(sine, rate, 1.0)));
+  EXPECT_TRUE(acf_converged(acf_envelope_after(decaying, rate, 1.0)));
+  EXPECT_FALSE(spectrum_without_dominant_peak(0.31));
+  EXPECT_TRUE(spectrum_without_dominant_peak(0.08));
+}
+
+TEST(ClaimRules, CircuitContrastAndSpeedOrder) {
+  EXPECT_TRUE(fluctuates_much_more({0.3, 0.4}, {0.01, 0.05}));
+  EXPECT_FALSE(fluctuates_much_more({0.3, 0.1}, {0.01, 0.05}));  // 0.1 < 3 x 0.05
+  EXPECT_TRUE(strictly_increasing({38, 66, 110}));
+  EXPECT_FALSE(strictly_increasing({38, 66, 60}));
+  std::vector<double> steady(100, 2.0), wobbly(100, 2.0);
+  for (std::size_t k = 0; k < wobbly.size(); ++k) wobbly[k] += (k % 2 ? 1.0 : -1.0);
+  EXPECT_DOUBLE_EQ(relative_fluctuation(steady, 10), 0.0);
+  EXPECT_NEAR(relative_fluctuation(wobbly, 10), 0.5, 1e-12);
+}
+
+TEST(ClaimRules, LowSpeedSlopeSeesAStribeckDip) {
+  std::vector<double> v, falling, rising;
+  for (int k = 1; k <= 50; ++k) {
+    v.push_back(1e-3 * k);
+    falling.push_back(20.0 - 100.0 * 1e-3 * k);  // Stribeck: friction falls with speed
+    rising.push_back(10.0 + 100.0 * 1e-3 * k);   // viscous only
+  }
+  EXPECT_NEAR(low_speed_slope(v, falling, 0.05), -100.0, 1e-9);
+  EXPECT_NEAR(low_speed_slope(v, rising, 0.05), 100.0, 1e-9);
+}
+
+TEST(Claims, DampingAndSignRuleFollowTheirInputs) {
+  ClaimInputs in;
+  in.higher_ps = DampingChange{-99, -98, -96, -95, 35.0, 30.0};
+  in.heavier = DampingChange{-99, -98, -96, -95, 35.0, 40.0};
+  in.sign_rule = SignRuleCounts{18, 15, 24, 24};
+  auto claims = evaluate_claims(in);
+  EXPECT_EQ(claims[11].verdict, "agrees");
+  EXPECT_EQ(claims[12].verdict, "agrees");
+  EXPECT_EQ(claims[10].verdict, "agrees");
+  in.higher_ps = DampingChange{-99, -98, -96, -96, 35.0, 36.0};  // b1 unchanged, less damped
+  in.heavier = DampingChange{-99, -100, -96, -95, 35.0, 40.0};   // a1 falls
+  in.sign_rule = SignRuleCounts{18, 10, 24, 24};                 // damped points oscillate
+  claims = evaluate_claims(in);
+  EXPECT_EQ(claims[11].verdict, "disagrees");
+  EXPECT_EQ(claims[12].verdict, "disagrees");
+  EXPECT_EQ(claims[10].verdict, "disagrees");
+  EXPECT_EQ(claims[7].verdict, "not reproduced");  // no ACF given
 }
 
 }  // namespace

@@ -59,12 +59,16 @@ FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
   return f;
 }
 
-FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds) {
+FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds,
+                                 const std::vector<std::array<double, 2>>& steady) {
   FigureSpec f;
   f.name = "fig3_friction_velocity";
-  f.caption =
-      "Fig. 3: seal friction force against piston velocity: the loops the friction traces "
-      "while the velocity oscillates (the paper's A-B-C-B-D-A).";
+  f.caption = fmt::format(
+      "Fig. 3: seal friction force against piston velocity over the last {:g} s of each record: "
+      "the loops the friction traces while the velocity oscillates (the paper's A-B-C-B-D-A), "
+      "beside the seal's steady friction-velocity curve (black, dashed), whose falling part at "
+      "low speed is the negative slope B of the paper's Section 3.4.",
+      seconds);
   std::string plot =
       "set grid\nset xlabel 'piston velocity [mm/s]'\nset ylabel 'seal friction [N]'\n"
       "set key top left\nplot ";
@@ -82,7 +86,11 @@ FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, dou
     plot += fmt::format("{}'{}' using 1:2 with lines lw 1 title '{}'", i ? ", " : "", file,
                         records[i].label);
   }
-  f.plot = plot;
+  std::string curve = "# v[mm/s] F_steady[N]\n";
+  for (const auto& [v, F] : steady) curve += fmt::format("{} {}\n", 1e3 * v, F);
+  f.data.emplace_back("fig3_steady.dat", curve);
+  f.plot = plot + ", 'fig3_steady.dat' using 1:2 with lines dt 2 lw 2 lc 'black' title 'steady "
+                  "friction-velocity curve'";
   return f;
 }
 
@@ -93,6 +101,10 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
       "Stability of the steady motion over S1 x S2 (full-model Jacobian): largest real "
       "part of the eigenvalues, red self-excited, blue damped; crosses: no steady motion.";
   std::string table = "# S1[mm^2] S2[mm^2] max_real_part[1/s] (NaN: no equilibrium)\n";
+  double extreme = 1.0;  // symmetric about 0 so white stays neutral; never clips a value
+  for (const auto& p : map.points) {
+    if (p.result.has_equilibrium()) extreme = std::max(extreme, std::abs(p.result.max_real_part_per_s));
+  }
   const std::size_t n2 = map.axes[1].values.size();
   for (std::size_t i = 0; i < map.points.size(); ++i) {
     const auto& p = map.points[i];
@@ -103,7 +115,9 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
   f.data = {{"stability_map.dat", table}};
   f.plot =
       "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]'\n"
-      "set palette defined (-1 'blue', 0 'white', 1 'red')\nset cbrange [-30:30]\n"
+      "set palette defined (-1 'blue', 0 'white', 1 'red')\n" +
+      fmt::format("set cbrange [-{0}:{0}]\n", std::ceil(extreme)) +
+      "set title 'Stability of the steady motion: largest real part of the eigenvalues'\n"
       "set view map\nset key off\n"
       "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:($3 != $3 ? $2 : 1/0) "
       "with points pt 2 lc 'black'";
@@ -112,57 +126,67 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
 
 FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
                                 const SweepSpec& spec, const SweepSummary& summary) {
-  FigureSpec f;
-  f.name = name;
-  f.caption = title +
-              ": incidence of chaos in grey (white 0 %, black 100 %), stick-slip region "
-              "hatched (stick-slip in at least half of the runs).";
   const auto& s1 = spec.axes[0].values;
   const auto& s2 = spec.axes[1].values;
   const double d1 = s1.size() > 1 ? s1[1] - s1[0] : 0.05;
   const double d2 = s2.size() > 1 ? s2[1] - s2[0] : 0.15;
   std::string grid = "# S1[mm^2] S2[mm^2] chaos_incidence stick_slip_incidence\n";
-  std::string hatch = "# hatching: x y dx dy\n";
+  std::string outline = "# stick-slip cells (outlined): x y dx dy, one edge per line\n";
+  std::size_t both = 0;
   for (std::size_t i = 0; i < summary.per_point.size(); ++i) {
     const auto& p = summary.per_point[i];
     grid += fmt::format("{} {} {} {}\n", p.coordinates[0], p.coordinates[1], p.chaos_incidence,
                         p.stick_slip_incidence);
     if ((i + 1) % s2.size() == 0) grid += "\n";
-    if (p.stick_slip_incidence >= 0.5) {
-      // Three oblique strokes across the cell.
-      for (double u : {-0.5, 0.0, 0.5}) {
-        const double x0 = p.coordinates[0] - d1 / 2, y0 = p.coordinates[1] - d2 / 2;
-        const double a = std::max(0.0, u), b = std::max(0.0, -u);
-        hatch += fmt::format("{} {} {} {}\n", x0 + a * d1, y0 + b * d2, (1 - std::abs(u)) * d1,
-                             (1 - std::abs(u)) * d2);
-      }
-    }
+    if (p.stick_slip_incidence < 0.5) continue;
+    if (p.chaos_incidence > 0.0) ++both;
+    // An outline inset into the cell, not a fill: the grey of the chaos incidence stays visible.
+    const double x0 = p.coordinates[0] - 0.42 * d1, y0 = p.coordinates[1] - 0.42 * d2;
+    const double w = 0.84 * d1, h = 0.84 * d2;
+    outline += fmt::format("{0} {1} {2} 0\n{0} {1} 0 {3}\n{4} {1} 0 {3}\n{0} {5} {2} 0\n", x0,
+                           y0, w, h, x0 + w, y0 + h);
   }
-  f.data = {{name + ".dat", grid}, {name + "_hatch.dat", hatch}};
-  f.plot = fmt::format(
-      "set title '{}'\nset xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'chaos "
-      "incidence'\n"
-      "set palette gray negative\nset cbrange [0:1]\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
-      "set key off\n"
-      "plot '{}.dat' using 1:2:3 with image, '{}_hatch.dat' using 1:2:3:4 with vectors nohead lc "
-      "'#d62728' lw 1.2",
-      title, s1.front() - d1 / 2, s1.back() + d1 / 2, s2.front() - d2 / 2, s2.back() + d2 / 2, name,
+  FigureSpec f;
+  f.name = name;
+  f.caption = fmt::format(
+      "{}: each cell is one (S1, S2) point of the grid; its grey is the share of its {} runs "
+      "judged chaotic (white 0 %, black 100 %); a red outline marks stick-slip in at least half "
+      "of its runs ({} cells are both chaotic at least once and stick-slip). Left: the paper's "
+      "full grid; right: the same map zoomed to S2 < 0.7 mm^2, where the regimes change.",
+      title, spec.repeats, both);
+  f.data = {{name + ".dat", grid}, {name + "_stick_slip.dat", outline}};
+  f.width = 1200;
+  f.height = 560;
+  const std::string layers = fmt::format(
+      "plot '{0}.dat' using 1:2:3 with image, '{0}_stick_slip.dat' using 1:2:3:4 with vectors "
+      "nohead lc '#d62728' lw 1.5\n",
       name);
+  f.plot = fmt::format(
+      "set multiplot layout 1,2 title '{}'\nset xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\n"
+      "set cblabel 'chaos incidence'\nset palette gray negative\nset cbrange [0:1]\n"
+      "set xrange [{}:{}]\nset key off\nset title 'full grid'\nset yrange [{}:{}]\n{}"
+      "set title 'zoom: S2 < 0.7 mm^2'\nset yrange [{}:0.7]\n{}unset multiplot",
+      title, s1.front() - d1 / 2, s1.back() + d1 / 2, s2.front() - d2 / 2, s2.back() + d2 / 2,
+      layers, s2.front() - d2 / 2, layers);
   return f;
 }
 
 std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, double rate_Hz,
-                                                const AnalysisResult& a,
+                                                double start_s, const AnalysisResult& a,
                                                 const std::vector<double>& model_t,
                                                 const std::vector<double>& model_running) {
   std::vector<FigureSpec> figs;
   {
     FigureSpec f;
     f.name = "fig7a_record";
-    f.caption = "Fig. 7a: the piston velocity record of the chaotic example (1 kHz).";
+    f.caption = fmt::format(
+        "Fig. 7a: the piston velocity of the chaotic example (S1 2.70, S2 0.35 mm^2), 5 s of the "
+        "settled record analysed in Fig. 7b-d: from t = {:g} s on (the rest and start-up before "
+        "it are left out).",
+        start_s);
     std::string t = "# t[s] v[mm/s]\n";
     for (std::size_t k = 0; k < v.size() && k < static_cast<std::size_t>(5 * rate_Hz); ++k) {
-      t += fmt::format("{} {}\n", k / rate_Hz, 1e3 * v[k]);
+      t += fmt::format("{} {}\n", start_s + k / rate_Hz, 1e3 * v[k]);
     }
     f.data = {{"fig7a_record.dat", t}};
     f.height = 360;
@@ -176,8 +200,12 @@ std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, do
     f.name = "fig7b_indices";
     f.caption =
         "Fig. 7b: power spectrum, autocorrelation and the convergence of the maximum "
-        "Lyapunov exponent (Wolf's running estimate, the model's own, and the divergence "
-        "estimate as a line).";
+        "Lyapunov exponent: Wolf's running estimate from the record, the model's own (two "
+        "nearby model states, renormalised) and the slope of the record's divergence curve "
+        "(dashed). They are three estimators of one exponent and need not agree closely: the "
+        "record-based two see only the velocity, through a delay embedding of a finite record; "
+        "the model's follows two nearby trajectories of the equations themselves and is the "
+        "most direct.";
     std::string sp = "# f[Hz] psd[(mm/s)^2/Hz]\n";
     for (std::size_t k = 1; k < a.spectrum.psd.size(); ++k) {
       sp += fmt::format("{} {}\n", a.spectrum.frequency_Hz[k], 1e6 * a.spectrum.psd[k]);
@@ -223,8 +251,8 @@ std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, do
     FigureSpec f;
     f.name = "fig7c_trajectory";
     f.caption = fmt::format(
-        "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)), "
-        "tau = {:.0f} ms.",
+        "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)) in mm/s, "
+        "tau = {:.0f} ms, 4 s of the settled record (start-up left out).",
         1e3 * a.delay.delay / rate_Hz);
     const std::size_t tau = a.delay.delay;
     std::string t = "# v(t) v(t+tau) v(t+2tau) [mm/s]\n";
@@ -236,7 +264,8 @@ std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, do
     f.width = 700;
     f.height = 600;
     f.plot =
-        "set xlabel 'v(t)'\nset ylabel 'v(t+tau)'\nset zlabel 'v(t+2tau)'\nset view 60,30\n"
+        "set xlabel 'v(t) [mm/s]'\nset ylabel 'v(t+tau) [mm/s]'\nset zlabel 'v(t+2tau) [mm/s]'\n"
+        "set view 60,30\n"
         "set key off\nsplot 'fig7c_trajectory.dat' using 1:2:3 with lines lw 0.6";
     figs.push_back(f);
   }

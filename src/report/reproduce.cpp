@@ -3,12 +3,17 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/figures.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
+#include "progress.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
@@ -16,17 +21,24 @@
 namespace pneumachaos {
 namespace {
 
-class Stages {
- public:
-  Stages(bool show, int total) : show_(show && ::isatty(STDERR_FILENO) != 0), total_(total) {}
-  void next(const std::string& what) {
-    if (show_) fmt::print(stderr, "reproduce: [{}/{}] {}\n", ++done_, total_, what);
+// An --out that exists must be empty or hold an earlier report (its page, figures or the
+// sweeps of an interrupted run): anything else is refused rather than mixed with the report.
+void check_out_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw Error(dir, "--out exists and is not a directory");
+  if (fs::is_empty(dir, ec)) return;
+  for (const char* mark : {"index.html", "figures", "sweeps"}) {
+    if (fs::exists(fs::path(dir) / mark, ec)) return;
   }
+  throw Error(dir,
+              "--out exists and is not an earlier report (no index.html, figures/ or sweeps/); "
+              "choose a new or empty directory");
+}
 
- private:
-  bool show_;
-  int total_, done_ = 0;
-};
+// The chaotic example starts at rest; its analysis and Fig. 7 skip the start-up.
+constexpr double kSettle_s = 2.0;
 
 SimulationResult run(Scenario s, double duration_s) {
   s.run.duration_s = duration_s;
@@ -46,21 +58,120 @@ Scenario paper_model(CircuitKind kind, double S1_mm2, double S2_mm2) {
   return s;
 }
 
+// Fig. 2 reduced to the claim's numbers: the settled part starts after 1 s of the 3 s records.
+CircuitContrast contrast(const std::vector<LabelledRecord>& in,
+                         const std::vector<LabelledRecord>& out) {
+  CircuitContrast c;
+  const auto add = [](const LabelledRecord& r, std::vector<double>& fl, std::vector<double>& mean) {
+    const auto& v = r.series.channel("v").values;
+    const auto from = static_cast<std::size_t>(r.series.rate_Hz());
+    fl.push_back(relative_fluctuation(v, from));
+    double sum = 0.0;
+    for (std::size_t k = from; k < v.size(); ++k) sum += v[k];
+    mean.push_back(from < v.size() ? sum / (v.size() - from) : 0.0);
+  };
+  for (const auto& r : in) add(r, c.meter_in_fluctuation, c.meter_in_mean);
+  for (const auto& r : out) add(r, c.meter_out_fluctuation, c.meter_out_mean);
+  return c;
+}
+
+std::optional<DampingChange> damping_change(const Scenario& before, const Scenario& after) {
+  const StabilityResult b = analyze_stability(Plant(before));
+  const StabilityResult a = analyze_stability(Plant(after));
+  if (!b.has_equilibrium() || !a.has_equilibrium()) return std::nullopt;
+  return DampingChange{b.paper.a1, a.paper.a1, b.paper.b1, a.paper.b1, b.max_real_part_per_s,
+                       a.max_real_part_per_s};
+}
+
+// The seal's steady friction-velocity curve from 0.5 mm/s to v_max, at the rig's pressure
+// gains' zero point (gauge sum 0; the default rig has no pressure dependence).
+std::vector<std::array<double, 2>> steady_curve(const Plant& plant, double v_max) {
+  std::vector<std::array<double, 2>> c;
+  for (double v = 0.5e-3; v <= v_max; v += 0.5e-3) {
+    c.push_back({v, plant.seal_friction().steady_force_N(FrictionInput{v, 0.0, 0.0})});
+  }
+  return c;
+}
+
+// The paper's sign verdict per point against the runs of the same point (same grid order).
+SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& sweep) {
+  SignRuleCounts c;
+  for (std::size_t i = 0; i < map.points.size() && i < sweep.per_point.size(); ++i) {
+    const StabilityResult& r = map.points[i].result;
+    if (!map.points[i].error.empty() || !r.has_equilibrium()) continue;
+    // regime_incidence[0] is "steady" (sweep_regime_names()).
+    const bool steady = sweep.per_point[i].regime_incidence.at(0) >= 0.5;
+    if (r.paper.verdict == StabilityVerdict::kDamped) {
+      ++c.damped;
+      c.damped_steady += steady ? 1 : 0;
+    } else {
+      ++c.excited;
+      c.excited_moving += steady ? 0 : 1;
+    }
+  }
+  return c;
+}
+
+// The maps' grid and run-to-run variation (docs/virtual_rig.md).
+SweepSpec map_spec(const Scenario& base, bool quick) {
+  SweepSpec spec;
+  spec.base = base;
+  spec.base.variation.friction_rel_sd = 0.03;
+  spec.base.variation.texture_rel = 0.02;
+  spec.axes = quick ? std::vector<GridAxis>{parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
+                                            parse_grid_axis("circuit.S2_mm2=0.05:0.95:0.15")}
+                    : paper_valve_grid();
+  spec.repeats = quick ? 2 : 5;
+  if (quick) spec.base.run.duration_s = 5.0;
+  return spec;
+}
+
+// The Fig. 7 and Fig. 3 numbers of the claims, from the settled record v (which starts at
+// sample `settle` of the full friction channel F).
+void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vector<double>& v,
+                        const std::vector<double>& F, std::size_t settle) {
+  if (a.divergence.found_linear_region) {
+    ci.example_lambda = a.divergence.lambda_per_s;
+    ci.example_uncertainty = a.divergence.uncertainty_per_s;
+  }
+  ci.example_chaotic = a.verdict.chaotic;
+  ci.example_peak_share = a.spectrum.peak_share;
+  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
+  // Low speed: up to a quarter of the example's largest speed.
+  const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+  ci.friction_slope_vmax = 0.25 * vmax;
+  const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(settle), F.end());
+  ci.friction_slope = low_speed_slope(v, F_settled, ci.friction_slope_vmax);
+}
+
+// The conclusion's Fig. 5 and Fig. 6 changes at the example point, by the linear analysis.
+void add_damping_inputs(ClaimInputs& ci, const Scenario& base) {
+  Scenario high_ps = base, heavy = base;
+  apply_setting(high_ps, "supply.pressure_MPa", 0.30, "reproduce");
+  apply_setting(heavy, "load.mass_kg", 3.0, "reproduce");
+  ci.higher_ps = damping_change(base, high_ps);
+  ci.heavier = damping_change(base, heavy);
+}
+
 }  // namespace
 
 ReproduceResult reproduce(const ReproduceOptions& o) {
+  check_out_dir(o.out_dir);
   const std::string fig_dir = o.out_dir + "/figures";
   std::error_code ec;
   std::filesystem::create_directories(fig_dir, ec);
   if (ec) throw Error(o.out_dir, "cannot create the report directory: " + ec.message());
-  Stages stage(o.progress, 9);
   ReproduceResult result;
   const auto add = [&](const FigureSpec& spec) {
     result.figures.push_back(render_figure(spec, fig_dir));
   };
   const double record_s = o.quick ? 10.0 : 30.0;
 
-  stage.next("Fig. 2: time responses of the paper's model");
+  const Scenario base = default_scenario();
+  const SweepSpec spec = map_spec(base, o.quick);
+  ReproduceProgress stage(o.progress, 9, 4 * spec.runs());
+
+  stage.stage("Fig. 2: time responses of the paper's model");
   std::vector<LabelledRecord> in, out;
   for (double S : {0.2, 0.35, 0.6}) {
     in.push_back({fmt::format("S1 = {} mm^2", S),
@@ -70,39 +181,32 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   }
   add(time_responses_figure(in, out));
 
-  stage.next("Fig. 7: the chaotic example and its indices");
-  const Scenario base = default_scenario();
+  stage.stage("Fig. 7: the chaotic example and its indices");
   const SimulationResult example = run(base, record_s);
-  const auto& v = example.series.channel("v").values;
+  // The settled record: the first kSettle_s (rest and start-up) are left out of the analysis.
+  const auto& v_all = example.series.channel("v").values;
+  const auto settle = static_cast<std::size_t>(kSettle_s * example.series.rate_Hz());
+  const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
   const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
   ModelLyapunovOptions lo;
   lo.measure_s = o.quick ? 10.0 : 40.0;
   const ModelLyapunovResult model = plant_lyapunov(Plant(base), base.run, lo);
-  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), a, model.running_time_s,
+  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), kSettle_s, a,
+                                               model.running_time_s,
                                                model.running_per_s)) {
     add(f);
   }
 
-  stage.next("Fig. 3: friction-velocity loops");
+  stage.stage("Fig. 3: friction-velocity loops");
   Scenario stick = base;
   stick.circuit.S2_m2 = 0.05e-6;
   add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example.series},
                              {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
-                            o.quick ? 1.0 : 2.0));
+                            o.quick ? 1.0 : 2.0, steady_curve(Plant(base), 0.2)));
 
-  // The maps' grid and run-to-run variation (docs/virtual_rig.md).
-  SweepSpec spec;
-  spec.base = base;
-  spec.base.variation.friction_rel_sd = 0.03;
-  spec.base.variation.texture_rel = 0.02;
-  spec.axes = o.quick ? std::vector<GridAxis>{parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
-                                              parse_grid_axis("circuit.S2_mm2=0.05:0.95:0.15")}
-                      : paper_valve_grid();
-  spec.repeats = o.quick ? 2 : 5;
-  if (o.quick) spec.base.run.duration_s = 5.0;
-
-  stage.next("stability map");
-  add(stability_map_figure(stability_map(base, spec.axes)));
+  stage.stage("stability map");
+  const StabilityMap smap = stability_map(base, spec.axes);
+  add(stability_map_figure(smap));
 
   struct Condition {
     std::string name, title, key;
@@ -115,7 +219,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
       {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg", 4.5}};
   std::vector<SweepSummary> maps;
   for (const Condition& c : conditions) {
-    stage.next("sweep: " + c.title);
+    stage.stage("sweep: " + c.title);
     SweepSpec s = spec;
     if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
     SweepOptions so;
@@ -125,21 +229,22 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
     // A second run of reproduce resumes (or re-reads) the sweeps of the first.
     so.resume = true;
     maps.push_back(run_sweep(s, so));
+    stage.runs_done(s.runs());
     add(incidence_map_figure(c.name, c.title, s, maps.back()));
   }
 
-  stage.next("claims and report");
+  stage.stage("claims and report");
   ClaimInputs ci;
   ci.spec = spec;
   ci.base = maps[0];
   ci.high_ps = maps[1];
   ci.double_m = maps[2];
   ci.triple_m = maps[3];
-  if (a.divergence.found_linear_region) {
-    ci.example_lambda = a.divergence.lambda_per_s;
-    ci.example_uncertainty = a.divergence.uncertainty_per_s;
-  }
+  add_example_inputs(ci, a, v, example.series.channel("F_friction").values, settle);
   if (model.ok) ci.example_model_lambda = model.lambda_per_s;
+  ci.fig2 = contrast(in, out);
+  add_damping_inputs(ci, base);
+  ci.sign_rule = sign_rule_counts(smap, maps[0]);
   result.claims = evaluate_claims(ci);
   const std::string settings = fmt::format(
       "{} grid ({} x {} points), {} runs per point, {} s records, 3 % friction variation and a "

@@ -2,6 +2,7 @@
 // The report's figures (the paper's Figs. 2-7 and the stability map) as FigureSpecs: data
 // tables and gnuplot commands, ready for render_figure.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -22,16 +23,19 @@ struct LabelledRecord {
 
 FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
                                  const std::vector<LabelledRecord>& meter_out);
-/// Seal friction against piston velocity over `seconds` of each record (Fig. 3's loops).
-FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds);
+/// Seal friction against piston velocity over `seconds` of each record (Fig. 3's loops),
+/// with the seal's steady curve as (v [m/s], F [N]) pairs.
+FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds,
+                                 const std::vector<std::array<double, 2>>& steady);
 FigureSpec stability_map_figure(const StabilityMap& map);
 /// Chaos incidence in grey (white 0 %, black 100 %) with the stick-slip region hatched.
 FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
                                 const SweepSpec& spec, const SweepSummary& summary);
 /// Fig. 7: (a) the record, (b) spectrum, autocorrelation and Lyapunov convergence,
-/// (c) the delay-embedded trajectory, (d) its Poincare section.
+/// (c) the delay-embedded trajectory, (d) its Poincare section. v is the settled record,
+/// starting start_s after the simulation's start.
 std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, double rate_Hz,
-                                                const AnalysisResult& a,
+                                                double start_s, const AnalysisResult& a,
                                                 const std::vector<double>& model_running_t,
                                                 const std::vector<double>& model_running);
 

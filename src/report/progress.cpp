@@ -1,0 +1,56 @@
+#include "progress.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+namespace pneumachaos {
+
+ReproduceProgress::ReproduceProgress(bool show, int stages, std::size_t total_runs)
+    : stages_(stages), total_runs_(total_runs) {
+  terminal_ = show && ::isatty(STDERR_FILENO) != 0;
+  plain_ = show && !terminal_;
+  if (plain_) ticker_ = std::thread([this] { tick(); });
+}
+
+ReproduceProgress::~ReproduceProgress() {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    stop_ = true;
+  }
+  cv_.notify_all();
+  if (ticker_.joinable()) ticker_.join();
+}
+
+void ReproduceProgress::stage(const std::string& what) {
+  std::lock_guard<std::mutex> lock(m_);
+  ++done_;
+  what_ = what;
+  if (terminal_) fmt::print(stderr, "reproduce: [{}/{}] {}\n", done_, stages_, what);
+}
+
+void ReproduceProgress::runs_done(std::size_t runs) {
+  std::lock_guard<std::mutex> lock(m_);
+  runs_ += runs;
+}
+
+std::string ReproduceProgress::line_locked() const {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  // The sweeps dominate the time: extrapolate from the runs finished so far.
+  const std::string eta =
+      runs_ == 0 ? "ETA unknown"
+                 : fmt::format("ETA {:.0f} s", elapsed * (total_runs_ - runs_) / runs_);
+  return fmt::format("reproduce: stage {}/{} ({}), {} of {} sweep runs done, {:.0f} s elapsed, {}",
+                     done_, stages_, what_, runs_, total_runs_, elapsed, eta);
+}
+
+// One line every 10 s, never more often: a log gets a heartbeat, not a flood.
+void ReproduceProgress::tick() {
+  std::unique_lock<std::mutex> lock(m_);
+  while (!cv_.wait_for(lock, std::chrono::seconds(10), [this] { return stop_; })) {
+    fmt::print(stderr, "{}\n", line_locked());
+    std::fflush(stderr);
+  }
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,41 @@
+#pragma once
+// reproduce's progress: on a terminal one line per stage; otherwise (a log, CI) a plain line
+// at most every 10 s with the stage, the sweep runs done and an estimate of the time left,
+// so a redirected run is never silent for long and never floods its log (docs/report.md).
+
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace pneumachaos {
+
+class ReproduceProgress {
+ public:
+  /// total_runs: the sweep runs of the whole report (the bulk of its time).
+  ReproduceProgress(bool show, int stages, std::size_t total_runs);
+  ~ReproduceProgress();
+  ReproduceProgress(const ReproduceProgress&) = delete;
+  ReproduceProgress& operator=(const ReproduceProgress&) = delete;
+
+  void stage(const std::string& what);
+  void runs_done(std::size_t runs);  ///< add the runs of a finished sweep
+
+ private:
+  void tick();
+  [[nodiscard]] std::string line_locked() const;
+
+  bool terminal_ = false, plain_ = false;
+  int stages_, done_ = 0;
+  std::size_t total_runs_, runs_ = 0;
+  std::string what_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool stop_ = false;
+  std::thread ticker_;
+};
+
+}  // namespace pneumachaos
