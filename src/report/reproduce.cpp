@@ -153,109 +153,148 @@ void add_damping_inputs(ClaimInputs& ci, const Scenario& base) {
   ci.heavier = damping_change(base, heavy);
 }
 
+// The report's figures and the inputs of its claims, gathered stage by stage.
+class ReportBuilder {
+ public:
+  explicit ReportBuilder(const ReproduceOptions& o)
+      : o_(o),
+        fig_dir_(o.out_dir + "/figures"),
+        base_(default_scenario()),
+        spec_(map_spec(base_, o.quick)),
+        stage_(o.progress, 9, 4 * spec_.runs()) {}
+
+  // Fig. 2: the paper's own model in both circuits, at three valve openings each.
+  void time_responses() {
+    stage_.stage("Fig. 2: time responses of the paper's model");
+    std::vector<LabelledRecord> in, out;
+    for (double S : {0.2, 0.35, 0.6}) {
+      in.push_back({fmt::format("S1 = {} mm^2", S),
+                    run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
+      out.push_back({fmt::format("S2 = {} mm^2", S),
+                     run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
+    }
+    add(time_responses_figure(in, out));
+    claims_.fig2 = contrast(in, out);
+  }
+
+  // Fig. 7: the chaotic example, analysed on its settled record (the first kSettle_s, rest
+  // and start-up, are left out), beside the model's own exponent.
+  void chaotic_example() {
+    stage_.stage("Fig. 7: the chaotic example and its indices");
+    example_ = run(base_, record_s());
+    const auto& v_all = example_.series.channel("v").values;
+    const auto settle = static_cast<std::size_t>(kSettle_s * example_.series.rate_Hz());
+    const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
+    const AnalysisResult a = analyze_series(v, example_.series.rate_Hz());
+    ModelLyapunovOptions lo;
+    lo.measure_s = o_.quick ? 10.0 : 40.0;
+    const ModelLyapunovResult model = plant_lyapunov(Plant(base_), base_.run, lo);
+    for (const auto& f : chaotic_example_figures(v, example_.series.rate_Hz(), kSettle_s, a,
+                                                 model.running_time_s, model.running_per_s)) {
+      add(f);
+    }
+    add_example_inputs(claims_, a, v, example_.series.channel("F_friction").values, settle);
+    if (model.ok) claims_.example_model_lambda = model.lambda_per_s;
+  }
+
+  // Fig. 3: friction against velocity in chaotic oscillation and in stick-slip.
+  void friction_loops() {
+    stage_.stage("Fig. 3: friction-velocity loops");
+    Scenario stick = base_;
+    stick.circuit.S2_m2 = 0.05e-6;
+    add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example_.series},
+                               {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
+                              o_.quick ? 1.0 : 2.0, steady_curve(Plant(base_), 0.2)));
+  }
+
+  void stability() {
+    stage_.stage("stability map");
+    smap_ = stability_map(base_, spec_.axes);
+    add(stability_map_figure(smap_));
+  }
+
+  // Figs. 4-6 and the 4.5 kg condition: one resumable sweep each.
+  void maps() {
+    struct Condition {
+      std::string name, title, key;
+      double value;
+    };
+    const std::vector<Condition> conditions = {
+        {"fig4_map_ps025_m15", "Fig. 4: Ps 0.25 MPa, m 1.5 kg", "", 0.0},
+        {"fig5_map_ps030_m15", "Fig. 5: Ps 0.30 MPa, m 1.5 kg", "supply.pressure_MPa", 0.30},
+        {"fig6_map_ps025_m30", "Fig. 6: Ps 0.25 MPa, m 3.0 kg", "load.mass_kg", 3.0},
+        {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg",
+         4.5}};
+    for (const Condition& c : conditions) {
+      stage_.stage("sweep: " + c.title);
+      SweepSpec s = spec_;
+      if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
+      SweepOptions so;
+      so.out_dir = o_.out_dir + "/sweeps/" + c.name.substr(c.name.find("map_") + 4);
+      so.threads = o_.threads;
+      so.progress = o_.progress;
+      // A second run of reproduce resumes (or re-reads) the sweeps of the first.
+      so.resume = true;
+      maps_.push_back(run_sweep(s, so));
+      stage_.runs_done(s.runs());
+      add(incidence_map_figure(c.name, c.title, s, maps_.back()));
+    }
+  }
+
+  // The claims table and the page.
+  ReproduceResult finish() {
+    stage_.stage("claims and report");
+    claims_.spec = spec_;
+    claims_.base = maps_[0];
+    claims_.high_ps = maps_[1];
+    claims_.double_m = maps_[2];
+    claims_.triple_m = maps_[3];
+    add_damping_inputs(claims_, base_);
+    claims_.sign_rule = sign_rule_counts(smap_, maps_[0]);
+    result_.claims = evaluate_claims(claims_);
+    const std::string settings = fmt::format(
+        "{} grid ({} x {} points), {} runs per point, {} s records, 3 % friction variation and "
+        "a 2 % bore texture per run; chaotic example: {} s record.",
+        o_.quick ? "quick" : "the paper's", spec_.axes[0].values.size(),
+        spec_.axes[1].values.size(), spec_.repeats, spec_.base.run.duration_s, record_s());
+    result_.index_html = o_.out_dir + "/index.html";
+    AtomicFile html(result_.index_html);
+    html.stream() << report_html(result_.figures, result_.claims, scenario_to_toml(base_),
+                                 settings);
+    html.commit();
+    return result_;
+  }
+
+ private:
+  void add(const FigureSpec& spec) { result_.figures.push_back(render_figure(spec, fig_dir_)); }
+  [[nodiscard]] double record_s() const { return o_.quick ? 10.0 : 30.0; }
+
+  const ReproduceOptions& o_;
+  const std::string fig_dir_;
+  const Scenario base_;
+  const SweepSpec spec_;
+  ReproduceProgress stage_;
+  ReproduceResult result_;
+  ClaimInputs claims_;
+  SimulationResult example_;
+  StabilityMap smap_;
+  std::vector<SweepSummary> maps_;
+};
+
 }  // namespace
 
 ReproduceResult reproduce(const ReproduceOptions& o) {
   check_out_dir(o.out_dir);
-  const std::string fig_dir = o.out_dir + "/figures";
   std::error_code ec;
-  std::filesystem::create_directories(fig_dir, ec);
+  std::filesystem::create_directories(o.out_dir + "/figures", ec);
   if (ec) throw Error(o.out_dir, "cannot create the report directory: " + ec.message());
-  ReproduceResult result;
-  const auto add = [&](const FigureSpec& spec) {
-    result.figures.push_back(render_figure(spec, fig_dir));
-  };
-  const double record_s = o.quick ? 10.0 : 30.0;
-
-  const Scenario base = default_scenario();
-  const SweepSpec spec = map_spec(base, o.quick);
-  ReproduceProgress stage(o.progress, 9, 4 * spec.runs());
-
-  stage.stage("Fig. 2: time responses of the paper's model");
-  std::vector<LabelledRecord> in, out;
-  for (double S : {0.2, 0.35, 0.6}) {
-    in.push_back({fmt::format("S1 = {} mm^2", S),
-                  run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
-    out.push_back({fmt::format("S2 = {} mm^2", S),
-                   run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
-  }
-  add(time_responses_figure(in, out));
-
-  stage.stage("Fig. 7: the chaotic example and its indices");
-  const SimulationResult example = run(base, record_s);
-  // The settled record: the first kSettle_s (rest and start-up) are left out of the analysis.
-  const auto& v_all = example.series.channel("v").values;
-  const auto settle = static_cast<std::size_t>(kSettle_s * example.series.rate_Hz());
-  const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
-  const AnalysisResult a = analyze_series(v, example.series.rate_Hz());
-  ModelLyapunovOptions lo;
-  lo.measure_s = o.quick ? 10.0 : 40.0;
-  const ModelLyapunovResult model = plant_lyapunov(Plant(base), base.run, lo);
-  for (const auto& f : chaotic_example_figures(v, example.series.rate_Hz(), kSettle_s, a,
-                                               model.running_time_s,
-                                               model.running_per_s)) {
-    add(f);
-  }
-
-  stage.stage("Fig. 3: friction-velocity loops");
-  Scenario stick = base;
-  stick.circuit.S2_m2 = 0.05e-6;
-  add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example.series},
-                             {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
-                            o.quick ? 1.0 : 2.0, steady_curve(Plant(base), 0.2)));
-
-  stage.stage("stability map");
-  const StabilityMap smap = stability_map(base, spec.axes);
-  add(stability_map_figure(smap));
-
-  struct Condition {
-    std::string name, title, key;
-    double value;
-  };
-  const std::vector<Condition> conditions = {
-      {"fig4_map_ps025_m15", "Fig. 4: Ps 0.25 MPa, m 1.5 kg", "", 0.0},
-      {"fig5_map_ps030_m15", "Fig. 5: Ps 0.30 MPa, m 1.5 kg", "supply.pressure_MPa", 0.30},
-      {"fig6_map_ps025_m30", "Fig. 6: Ps 0.25 MPa, m 3.0 kg", "load.mass_kg", 3.0},
-      {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg", 4.5}};
-  std::vector<SweepSummary> maps;
-  for (const Condition& c : conditions) {
-    stage.stage("sweep: " + c.title);
-    SweepSpec s = spec;
-    if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
-    SweepOptions so;
-    so.out_dir = o.out_dir + "/sweeps/" + c.name.substr(c.name.find("map_") + 4);
-    so.threads = o.threads;
-    so.progress = o.progress;
-    // A second run of reproduce resumes (or re-reads) the sweeps of the first.
-    so.resume = true;
-    maps.push_back(run_sweep(s, so));
-    stage.runs_done(s.runs());
-    add(incidence_map_figure(c.name, c.title, s, maps.back()));
-  }
-
-  stage.stage("claims and report");
-  ClaimInputs ci;
-  ci.spec = spec;
-  ci.base = maps[0];
-  ci.high_ps = maps[1];
-  ci.double_m = maps[2];
-  ci.triple_m = maps[3];
-  add_example_inputs(ci, a, v, example.series.channel("F_friction").values, settle);
-  if (model.ok) ci.example_model_lambda = model.lambda_per_s;
-  ci.fig2 = contrast(in, out);
-  add_damping_inputs(ci, base);
-  ci.sign_rule = sign_rule_counts(smap, maps[0]);
-  result.claims = evaluate_claims(ci);
-  const std::string settings = fmt::format(
-      "{} grid ({} x {} points), {} runs per point, {} s records, 3 % friction variation and a "
-      "2 % bore texture per run; chaotic example: {} s record.",
-      o.quick ? "quick" : "the paper's", spec.axes[0].values.size(), spec.axes[1].values.size(),
-      spec.repeats, spec.base.run.duration_s, record_s);
-  result.index_html = o.out_dir + "/index.html";
-  AtomicFile html(result.index_html);
-  html.stream() << report_html(result.figures, result.claims, scenario_to_toml(base), settings);
-  html.commit();
-  return result;
+  ReportBuilder report(o);
+  report.time_responses();
+  report.chaotic_example();
+  report.friction_loops();
+  report.stability();
+  report.maps();
+  return report.finish();
 }
 
 }  // namespace pneumachaos
