@@ -171,122 +171,133 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
   return f;
 }
 
+namespace {
+
+FigureSpec fig7a_record(const std::vector<double>& v, double rate_Hz, double start_s) {
+  FigureSpec f;
+  f.name = "fig7a_record";
+  f.caption = fmt::format(
+      "Fig. 7a: the piston velocity of the chaotic example (S1 2.70, S2 0.35 mm^2), 5 s of the "
+      "settled record analysed in Fig. 7b-d: from t = {:g} s on (the rest and start-up before "
+      "it are left out).",
+      start_s);
+  std::string t = "# t[s] v[mm/s]\n";
+  for (std::size_t k = 0; k < v.size() && k < static_cast<std::size_t>(5 * rate_Hz); ++k) {
+    t += fmt::format("{} {}\n", start_s + k / rate_Hz, 1e3 * v[k]);
+  }
+  f.data = {{"fig7a_record.dat", t}};
+  f.height = 360;
+  f.plot =
+      "set grid\nset xlabel 'time [s]'\nset ylabel 'velocity [mm/s]'\nset key off\n"
+      "plot 'fig7a_record.dat' using 1:2 with lines lw 1";
+  return f;
+}
+
+FigureSpec fig7b_indices(double rate_Hz, const AnalysisResult& a,
+                         const std::vector<double>& model_t,
+                         const std::vector<double>& model_running) {
+  FigureSpec f;
+  f.name = "fig7b_indices";
+  f.caption =
+      "Fig. 7b: power spectrum, autocorrelation and the convergence of the maximum "
+      "Lyapunov exponent: Wolf's running estimate from the record, the model's own (two "
+      "nearby model states, renormalised) and the slope of the record's divergence curve "
+      "(dashed). They are three estimators of one exponent and need not agree closely: the "
+      "record-based two see only the velocity, through a delay embedding of a finite record; "
+      "the model's follows two nearby trajectories of the equations themselves and is the "
+      "most direct.";
+  std::string sp = "# f[Hz] psd[(mm/s)^2/Hz]\n";
+  for (std::size_t k = 1; k < a.spectrum.psd.size(); ++k) {
+    sp += fmt::format("{} {}\n", a.spectrum.frequency_Hz[k], 1e6 * a.spectrum.psd[k]);
+  }
+  std::string ac = "# lag[s] r\n";
+  for (std::size_t k = 0; k < a.acf.r.size() && k < static_cast<std::size_t>(2 * rate_Hz); ++k) {
+    ac += fmt::format("{} {}\n", k / rate_Hz, a.acf.r[k]);
+  }
+  std::string ly = "# t[s] wolf_running[1/s]\n";
+  for (std::size_t k = 0; k < a.wolf.running_per_s.size(); ++k) {
+    ly += fmt::format("{} {}\n", a.wolf.running_time_s[k], a.wolf.running_per_s[k]);
+  }
+  std::string ml = "# t[s] model_running[1/s]\n";
+  for (std::size_t k = 0; k < model_running.size(); ++k)
+    ml += fmt::format("{} {}\n", model_t[k] - model_t.front(), model_running[k]);
+  f.data = {{"fig7b_spectrum.dat", sp},
+            {"fig7b_acf.dat", ac},
+            {"fig7b_wolf.dat", ly},
+            {"fig7b_model.dat", ml}};
+  f.width = 1200;
+  f.height = 400;
+  f.plot = fmt::format(
+      "set multiplot layout 1,3\nset grid\n"
+      "set title 'power spectrum'\nset logscale y\nset xrange [0:100]\nset xlabel 'frequency "
+      "[Hz]'\n"
+      "set ylabel 'PSD [(mm/s)^2/Hz]'\nset key off\nplot 'fig7b_spectrum.dat' using 1:2 with "
+      "lines\n"
+      "unset logscale y\nset xrange [*:*]\nset title 'autocorrelation'\nset xlabel 'lag [s]'\n"
+      "set ylabel 'r'\nplot 'fig7b_acf.dat' using 1:2 with lines, 0 lc 'gray'\n"
+      "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\nset key "
+      "bottom right\n"
+      "set yrange [0:{}]\n"
+      "plot 'fig7b_wolf.dat' using 1:2 with lines title 'Wolf (running)', 'fig7b_model.dat' "
+      "using "
+      "1:2 with lines title 'model (running)', {} with lines dt 2 title 'divergence curve'\n"
+      "unset multiplot",
+      // The early running values are huge; the range shows where the estimates settle.
+      std::max(10.0, 3.0 * (model_running.empty() ? 0.0 : model_running.back())),
+      a.divergence.found_linear_region ? a.divergence.lambda_per_s : 0.0);
+  return f;
+}
+
+FigureSpec fig7c_trajectory(const std::vector<double>& v, double rate_Hz,
+                            const AnalysisResult& a) {
+  FigureSpec f;
+  f.name = "fig7c_trajectory";
+  f.caption = fmt::format(
+      "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)) in mm/s, "
+      "tau = {:.0f} ms, 4 s of the settled record (start-up left out).",
+      1e3 * a.delay.delay / rate_Hz);
+  const std::size_t tau = a.delay.delay;
+  std::string t = "# v(t) v(t+tau) v(t+2tau) [mm/s]\n";
+  for (std::size_t k = 0; k + 2 * tau < v.size() && k < static_cast<std::size_t>(4 * rate_Hz);
+       ++k) {
+    t += fmt::format("{} {} {}\n", 1e3 * v[k], 1e3 * v[k + tau], 1e3 * v[k + 2 * tau]);
+  }
+  f.data = {{"fig7c_trajectory.dat", t}};
+  f.width = 700;
+  f.height = 600;
+  f.plot =
+      "set xlabel 'v(t) [mm/s]'\nset ylabel 'v(t+tau) [mm/s]'\nset zlabel 'v(t+2tau) [mm/s]'\n"
+      "set view 60,30\n"
+      "set key off\nsplot 'fig7c_trajectory.dat' using 1:2:3 with lines lw 0.6";
+  return f;
+}
+
+FigureSpec fig7d_poincare(const AnalysisResult& a) {
+  FigureSpec f;
+  f.name = "fig7d_poincare";
+  f.caption = fmt::format(
+      "Fig. 7d: Poincare section of the embedded trajectory through the plane "
+      "v(t) = {:.1f} mm/s (upward crossings).",
+      1e3 * a.poincare.level);
+  std::string t = "# v(t+tau) v(t+2tau) [mm/s] at the crossings\n";
+  for (const auto& p : a.poincare.points) t += fmt::format("{} {}\n", 1e3 * p[0], 1e3 * p[1]);
+  f.data = {{"fig7d_poincare.dat", t}};
+  f.width = 600;
+  f.height = 560;
+  f.plot =
+      "set grid\nset xlabel 'v(t+tau) [mm/s]'\nset ylabel 'v(t+2tau) [mm/s]'\nset key off\n"
+      "plot 'fig7d_poincare.dat' using 1:2 with points pt 7 ps 0.5";
+  return f;
+}
+
+}  // namespace
+
 std::vector<FigureSpec> chaotic_example_figures(const std::vector<double>& v, double rate_Hz,
                                                 double start_s, const AnalysisResult& a,
                                                 const std::vector<double>& model_t,
                                                 const std::vector<double>& model_running) {
-  std::vector<FigureSpec> figs;
-  {
-    FigureSpec f;
-    f.name = "fig7a_record";
-    f.caption = fmt::format(
-        "Fig. 7a: the piston velocity of the chaotic example (S1 2.70, S2 0.35 mm^2), 5 s of the "
-        "settled record analysed in Fig. 7b-d: from t = {:g} s on (the rest and start-up before "
-        "it are left out).",
-        start_s);
-    std::string t = "# t[s] v[mm/s]\n";
-    for (std::size_t k = 0; k < v.size() && k < static_cast<std::size_t>(5 * rate_Hz); ++k) {
-      t += fmt::format("{} {}\n", start_s + k / rate_Hz, 1e3 * v[k]);
-    }
-    f.data = {{"fig7a_record.dat", t}};
-    f.height = 360;
-    f.plot =
-        "set grid\nset xlabel 'time [s]'\nset ylabel 'velocity [mm/s]'\nset key off\n"
-        "plot 'fig7a_record.dat' using 1:2 with lines lw 1";
-    figs.push_back(f);
-  }
-  {
-    FigureSpec f;
-    f.name = "fig7b_indices";
-    f.caption =
-        "Fig. 7b: power spectrum, autocorrelation and the convergence of the maximum "
-        "Lyapunov exponent: Wolf's running estimate from the record, the model's own (two "
-        "nearby model states, renormalised) and the slope of the record's divergence curve "
-        "(dashed). They are three estimators of one exponent and need not agree closely: the "
-        "record-based two see only the velocity, through a delay embedding of a finite record; "
-        "the model's follows two nearby trajectories of the equations themselves and is the "
-        "most direct.";
-    std::string sp = "# f[Hz] psd[(mm/s)^2/Hz]\n";
-    for (std::size_t k = 1; k < a.spectrum.psd.size(); ++k) {
-      sp += fmt::format("{} {}\n", a.spectrum.frequency_Hz[k], 1e6 * a.spectrum.psd[k]);
-    }
-    std::string ac = "# lag[s] r\n";
-    for (std::size_t k = 0; k < a.acf.r.size() && k < static_cast<std::size_t>(2 * rate_Hz); ++k) {
-      ac += fmt::format("{} {}\n", k / rate_Hz, a.acf.r[k]);
-    }
-    std::string ly = "# t[s] wolf_running[1/s]\n";
-    for (std::size_t k = 0; k < a.wolf.running_per_s.size(); ++k) {
-      ly += fmt::format("{} {}\n", a.wolf.running_time_s[k], a.wolf.running_per_s[k]);
-    }
-    std::string ml = "# t[s] model_running[1/s]\n";
-    for (std::size_t k = 0; k < model_running.size(); ++k)
-      ml += fmt::format("{} {}\n", model_t[k] - model_t.front(), model_running[k]);
-    f.data = {{"fig7b_spectrum.dat", sp},
-              {"fig7b_acf.dat", ac},
-              {"fig7b_wolf.dat", ly},
-              {"fig7b_model.dat", ml}};
-    f.width = 1200;
-    f.height = 400;
-    f.plot = fmt::format(
-        "set multiplot layout 1,3\nset grid\n"
-        "set title 'power spectrum'\nset logscale y\nset xrange [0:100]\nset xlabel 'frequency "
-        "[Hz]'\n"
-        "set ylabel 'PSD [(mm/s)^2/Hz]'\nset key off\nplot 'fig7b_spectrum.dat' using 1:2 with "
-        "lines\n"
-        "unset logscale y\nset xrange [*:*]\nset title 'autocorrelation'\nset xlabel 'lag [s]'\n"
-        "set ylabel 'r'\nplot 'fig7b_acf.dat' using 1:2 with lines, 0 lc 'gray'\n"
-        "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\nset key "
-        "bottom right\n"
-        "set yrange [0:{}]\n"
-        "plot 'fig7b_wolf.dat' using 1:2 with lines title 'Wolf (running)', 'fig7b_model.dat' "
-        "using "
-        "1:2 with lines title 'model (running)', {} with lines dt 2 title 'divergence curve'\n"
-        "unset multiplot",
-        // The early running values are huge; the range shows where the estimates settle.
-        std::max(10.0, 3.0 * (model_running.empty() ? 0.0 : model_running.back())),
-        a.divergence.found_linear_region ? a.divergence.lambda_per_s : 0.0);
-    figs.push_back(f);
-  }
-  {
-    FigureSpec f;
-    f.name = "fig7c_trajectory";
-    f.caption = fmt::format(
-        "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)) in mm/s, "
-        "tau = {:.0f} ms, 4 s of the settled record (start-up left out).",
-        1e3 * a.delay.delay / rate_Hz);
-    const std::size_t tau = a.delay.delay;
-    std::string t = "# v(t) v(t+tau) v(t+2tau) [mm/s]\n";
-    for (std::size_t k = 0; k + 2 * tau < v.size() && k < static_cast<std::size_t>(4 * rate_Hz);
-         ++k) {
-      t += fmt::format("{} {} {}\n", 1e3 * v[k], 1e3 * v[k + tau], 1e3 * v[k + 2 * tau]);
-    }
-    f.data = {{"fig7c_trajectory.dat", t}};
-    f.width = 700;
-    f.height = 600;
-    f.plot =
-        "set xlabel 'v(t) [mm/s]'\nset ylabel 'v(t+tau) [mm/s]'\nset zlabel 'v(t+2tau) [mm/s]'\n"
-        "set view 60,30\n"
-        "set key off\nsplot 'fig7c_trajectory.dat' using 1:2:3 with lines lw 0.6";
-    figs.push_back(f);
-  }
-  {
-    FigureSpec f;
-    f.name = "fig7d_poincare";
-    f.caption = fmt::format(
-        "Fig. 7d: Poincare section of the embedded trajectory through the plane "
-        "v(t) = {:.1f} mm/s (upward crossings).",
-        1e3 * a.poincare.level);
-    std::string t = "# v(t+tau) v(t+2tau) [mm/s] at the crossings\n";
-    for (const auto& p : a.poincare.points) t += fmt::format("{} {}\n", 1e3 * p[0], 1e3 * p[1]);
-    f.data = {{"fig7d_poincare.dat", t}};
-    f.width = 600;
-    f.height = 560;
-    f.plot =
-        "set grid\nset xlabel 'v(t+tau) [mm/s]'\nset ylabel 'v(t+2tau) [mm/s]'\nset key off\n"
-        "plot 'fig7d_poincare.dat' using 1:2 with points pt 7 ps 0.5";
-    figs.push_back(f);
-  }
-  return figs;
+  return {fig7a_record(v, rate_Hz, start_s), fig7b_indices(rate_Hz, a, model_t, model_running),
+          fig7c_trajectory(v, rate_Hz, a), fig7d_poincare(a)};
 }
 
 }  // namespace pneumachaos
