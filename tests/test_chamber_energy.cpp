@@ -9,6 +9,7 @@
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "tight_options.hpp"
 #include "stuck_samples.hpp"
 
 namespace pneumachaos {
@@ -29,14 +30,6 @@ Scenario closed_gas_spring(double h_W_per_m2K) {
   s.friction.kind = FrictionKind::kClassic;
   s.friction.coulomb_N = s.friction.static_N = s.friction.viscous_Ns_per_m = 0.0;
   return s;
-}
-
-SimulationOptions tight(double duration) {
-  SimulationOptions o;
-  o.duration_s = duration;
-  o.relative_tolerance = 1e-10;
-  o.absolute_tolerance = 1e-12;
-  return o;
 }
 
 SimulationResult run_gas_spring(const Plant& plant, double duration) {

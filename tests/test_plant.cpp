@@ -6,6 +6,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "tight_options.hpp"
 #include "stuck_samples.hpp"
 
 namespace pneumachaos {
@@ -19,14 +20,6 @@ Scenario frictionless_closed(double k) {
   s.friction.coulomb_N = s.friction.static_N = s.friction.viscous_Ns_per_m = 0.0;
   s.polytropic_exponent = k;
   return s;
-}
-
-SimulationOptions tight(double duration) {
-  SimulationOptions o;
-  o.duration_s = duration;
-  o.relative_tolerance = 1e-10;
-  o.absolute_tolerance = 1e-12;
-  return o;
 }
 
 class ClosedChamberTest : public ::testing::TestWithParam<double> {};

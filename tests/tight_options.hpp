@@ -1,0 +1,16 @@
+#pragma once
+// Simulation options for tests that compare with closed forms: tolerances far below the
+// documented defaults, so the integration error is negligible against the checked bounds.
+#include "pneumachaos/simulate/simulate.hpp"
+
+namespace pneumachaos {
+
+inline SimulationOptions tight(double duration) {
+  SimulationOptions o;
+  o.duration_s = duration;
+  o.relative_tolerance = 1e-10;
+  o.absolute_tolerance = 1e-12;
+  return o;
+}
+
+}  // namespace pneumachaos
