@@ -54,7 +54,7 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
     ++links;
   }
   EXPECT_GE(links, 11u * 4);  // image, SVG, script and data of each figure
-  EXPECT_EQ(r.claims.size(), 13u);
+  EXPECT_EQ(r.claims.size(), 15u);
   EXPECT_NE(html.find("<th>figure</th>"), std::string::npos);
   for (const Claim& c : r.claims) EXPECT_NE(html.find(c.verdict), std::string::npos);
   std::filesystem::remove_all(dir);
@@ -78,7 +78,7 @@ TEST(Claims, FollowTheSweepResults) {
   in.example_uncertainty = 0.3;
   in.example_chaotic = true;
   auto claims = evaluate_claims(in);
-  ASSERT_EQ(claims.size(), 13u);
+  ASSERT_EQ(claims.size(), 15u);
   EXPECT_EQ(claims[1].verdict, "agrees");     // 32 -> 26: -19 %
   EXPECT_EQ(claims[2].verdict, "agrees");     // 11 -> 0
   EXPECT_EQ(claims[3].verdict, "agrees");     // 32 -> 37, 8 always chaotic
@@ -168,6 +168,45 @@ TEST(ClaimRules, LowSpeedSlopeSeesAStribeckDip) {
   EXPECT_NEAR(low_speed_slope(v, rising, 0.05), 100.0, 1e-9);
 }
 
+// A memoryless friction curve F(v) traces no loop; a lagging one does; a record that rests
+// at zero speed is a standstill, not "without a standstill".
+TEST(ClaimRules, FrictionLoopNeedsHysteresisAndMotion) {
+  std::vector<double> v, memoryless, lagging, resting;
+  const double dt = 1e-3;
+  for (int k = 0; k < 4000; ++k) {
+    const double t = k * dt, w = 2 * M_PI * 4.0;
+    v.push_back(0.09 + 0.08 * std::sin(w * t));
+    memoryless.push_back(20.0 - 50.0 * v.back());
+    lagging.push_back(20.0 - 50.0 * (0.09 + 0.08 * std::sin(w * (t - 0.01))));
+    resting.push_back(std::max(0.0, 0.08 * std::sin(w * t)));
+  }
+  EXPECT_FALSE(loops_without_standstill(measure_friction_loop(v, memoryless)));
+  const FrictionLoop l = measure_friction_loop(v, lagging);
+  EXPECT_TRUE(loops_without_standstill(l));
+  EXPECT_EQ(l.hysteretic_bins, l.bins);
+  const FrictionLoop r = measure_friction_loop(resting, lagging);
+  EXPECT_GT(r.standstill_share, 0.4);
+  EXPECT_FALSE(loops_without_standstill(r));
+}
+
+TEST(ClaimRules, FoldAndStretchBands) {
+  FoldStretch f{0.8, 40, 12.0, 1.0, -5.0, 2.0};
+  EXPECT_TRUE(folded_and_stretched(f));
+  f.maxima_in_fold_band = 0.3;  // the trajectory turns back elsewhere
+  EXPECT_FALSE(folded_and_stretched(f));
+  f = FoldStretch{0.8, 40, 2.0, 1.0, -5.0, 2.0};  // stretching not significant
+  EXPECT_FALSE(folded_and_stretched(f));
+  f = FoldStretch{0.8, 40, 12.0, 1.0, 10.0, 2.0};  // the fold band stretches as much
+  EXPECT_FALSE(folded_and_stretched(f));
+  // A sine of amplitude 160 mm/s around 0 turns back at 160 mm/s, in the fold band, but
+  // nearby trajectories of a periodic orbit do not separate anywhere.
+  std::vector<double> sine(6000);
+  for (std::size_t k = 0; k < sine.size(); ++k) sine[k] = 0.16 * std::sin(2 * M_PI * 3.0 * k / 1000.0);
+  const FoldStretch s = measure_fold_stretch(sine, 1000.0, 3, 40, 80);
+  EXPECT_GT(s.maxima_in_fold_band, 0.9);
+  EXPECT_FALSE(folded_and_stretched(s));
+}
+
 TEST(Claims, DampingAndSignRuleFollowTheirInputs) {
   ClaimInputs in;
   in.higher_ps = DampingChange{-99, -98, -96, -95, 35.0, 30.0};
@@ -185,6 +224,10 @@ TEST(Claims, DampingAndSignRuleFollowTheirInputs) {
   EXPECT_EQ(claims[12].verdict, "disagrees");
   EXPECT_EQ(claims[10].verdict, "disagrees");
   EXPECT_EQ(claims[7].verdict, "not reproduced");  // no ACF given
+  ASSERT_EQ(claims.size(), 15u);
+  EXPECT_EQ(claims[13].verdict, "not reproduced");  // no fold/stretch measurement
+  in.friction_loop = FrictionLoop{0.3, 10, 10};      // loops, but rests 30 % of the time
+  EXPECT_EQ(evaluate_claims(in)[14].verdict, "disagrees");
 }
 
 }  // namespace

@@ -127,6 +127,39 @@ Claim damping(const std::string& what, const char* paper, const std::optional<Da
   return c;
 }
 
+Claim fold(const ClaimInputs& in) {
+  Claim c{"the trajectory is folded between 180 and 140 and stretched between 140 and 0",
+          "Fig. 7c (velocities in mm/s)", "", "",
+          "agrees if at least half of the velocity maxima (where the trajectory turns back) lie in "
+          "140-180 mm/s and nearby trajectories separate faster in 0-140 mm/s than in "
+          "140-180 mm/s, the rate there positive, each beyond 3 standard errors",
+          "fig7c_trajectory"};
+  if (!in.fold_stretch) return missing(c, "no record");
+  const FoldStretch& f = *in.fold_stretch;
+  c.ours = fmt::format("{:.0f} % of {} maxima in 140-180 mm/s; local stretching {:.1f} +- {:.1f} "
+                       "1/s in 0-140, {:.1f} +- {:.1f} 1/s in 140-180 mm/s",
+                       100 * f.maxima_in_fold_band, f.maxima, f.stretch_rate, f.stretch_se,
+                       f.fold_rate, f.fold_se);
+  c.verdict = verdict(folded_and_stretched(f));
+  return c;
+}
+
+Claim loop(const ClaimInputs& in) {
+  Claim c{"near the border the friction force makes a loop (A-B-C-B-D-A) and greatly fluctuates "
+          "without a standstill",
+          "Fig. 3, Section 4", "", "",
+          "agrees if the chaotic record is below 1 mm/s less than 1 % of the time and, in at least "
+          "half of 10 velocity bins, accelerating and decelerating friction differ beyond 3 "
+          "standard errors",
+          "fig3_friction_velocity"};
+  if (!in.friction_loop) return missing(c, "no record");
+  const FrictionLoop& l = *in.friction_loop;
+  c.ours = fmt::format("standstill {:.1f} % of the time; hysteresis in {} of {} velocity bins",
+                       100 * l.standstill_share, l.hysteretic_bins, l.bins);
+  c.verdict = verdict(loops_without_standstill(l));
+  return c;
+}
+
 }  // namespace
 
 std::vector<Claim> example_claims(const ClaimInputs& in) {
@@ -139,7 +172,9 @@ std::vector<Claim> example_claims(const ClaimInputs& in) {
           damping("increased supply pressure (0.25 -> 0.30 MPa) improves damping", "Fig. 5, eq. 11",
                   in.higher_ps, false),
           damping("additional load (1.5 -> 3.0 kg) increases a damping coefficient",
-                  "Fig. 6, eqs. 9 and 11", in.heavier, true)};
+                  "Fig. 6, eqs. 9 and 11", in.heavier, true),
+          fold(in),
+          loop(in)};
 }
 
 }  // namespace pneumachaos

@@ -142,6 +142,9 @@ void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vec
   ci.friction_slope_vmax = 0.25 * vmax;
   const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(settle), F.end());
   ci.friction_slope = low_speed_slope(v, F_settled, ci.friction_slope_vmax);
+  ci.friction_loop = measure_friction_loop(v, F_settled);
+  ci.fold_stretch = measure_fold_stretch(v, a.rate_Hz, a.dimension.dimension, a.delay.delay,
+                                         a.theiler);
 }
 
 // The conclusion's Fig. 5 and Fig. 6 changes at the example point, by the linear analysis.

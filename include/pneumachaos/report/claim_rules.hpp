@@ -43,6 +43,35 @@ bool fluctuates_much_more(const std::vector<double>& considerable,
 /// speeds, in order of increasing S, strictly increase.
 bool strictly_increasing(const std::vector<double>& x);
 
+/// Fig. 7c: "the trajectory is folded between 180 and 140 and stretched between 140 and 0"
+/// (velocities in mm/s). Read as: the trajectory turns back (its velocity maxima lie) in the
+/// fold band, and nearby trajectories separate in the stretch band faster than in the fold band.
+struct FoldStretch {
+  double maxima_in_fold_band = 0.0;  ///< share of the velocity maxima within 140-180 mm/s
+  std::size_t maxima = 0;
+  double stretch_rate = 0.0, stretch_se = 0.0;  ///< local stretching, 0-140 mm/s [1/s]
+  double fold_rate = 0.0, fold_se = 0.0;        ///< local stretching, 140-180 mm/s [1/s]
+};
+/// v in m/s; the embedding of the record's analysis (dimension at least 3, as Fig. 7c).
+FoldStretch measure_fold_stretch(const std::vector<double>& v, double rate_Hz,
+                                 std::size_t dimension, std::size_t delay, std::size_t theiler);
+/// At least half of the maxima in the fold band, and the stretch band's rate positive and
+/// above the fold band's, each beyond 3 standard errors.
+bool folded_and_stretched(const FoldStretch& f);
+
+/// Fig. 3 and Section 4: "the friction force makes a loop ... and greatly fluctuates without
+/// a standstill". The loop: at the same velocity the friction differs between accelerating
+/// and decelerating motion.
+struct FrictionLoop {
+  double standstill_share = 0.0;  ///< share of samples with |v| < 1 mm/s
+  std::size_t bins = 0;           ///< velocity bins with >= 10 samples on each branch
+  std::size_t hysteretic_bins = 0;  ///< ... whose branch means differ beyond 3 standard errors
+};
+/// Ten equal velocity bins between the 5 % and 95 % quantiles of v (m/s; F in N).
+FrictionLoop measure_friction_loop(const std::vector<double>& v, const std::vector<double>& F);
+/// Standstill under 1 % of the time, and hysteresis in at least half of at least 4 bins.
+bool loops_without_standstill(const FrictionLoop& l);
+
 /// Least-squares slope dF/dv over the samples with 0 < v <= v_max.
 double low_speed_slope(const std::vector<double>& v, const std::vector<double>& F, double v_max);
 

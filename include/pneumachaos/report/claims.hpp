@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -54,6 +55,8 @@ struct ClaimInputs {
   std::optional<CircuitContrast> fig2;
   std::optional<double> friction_slope;        ///< dF/dv at low speed, chaotic record [N*s/m]
   double friction_slope_vmax = 0.0;            ///< its upper speed [m/s]
+  std::optional<FoldStretch> fold_stretch;    ///< Fig. 7c, settled example record
+  std::optional<FrictionLoop> friction_loop;  ///< Fig. 3, settled example record
   std::optional<DampingChange> higher_ps, heavier;
   std::optional<SignRuleCounts> sign_rule;
 };
