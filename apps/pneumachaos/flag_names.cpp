@@ -2,13 +2,42 @@
 
 namespace pneumachaos::cli {
 
+const FlagNames& common_flag_names() {
+  static const FlagNames names{{"override", "--set"},
+                               {"grid", "--grid"},
+                               {"grid axis", "--grid"},
+                               {"repeats", "--repeats"},
+                               {"output directory", "--out"},
+                               {"sampling rate", "--rate"}};
+  return names;
+}
+
+std::string where_as_typed(const std::string& where, const FlagNames& names) {
+  // The longest place that is the whole of `where` or is followed by ": " or " " wins, so
+  // "grid axis X" becomes "--grid X" and a file named "gridded.csv" is left alone.
+  const FlagNames::value_type* best = nullptr;
+  for (const auto& entry : names) {
+    const std::string& place = entry.first;
+    if (!where.starts_with(place)) continue;
+    const std::string rest = where.substr(place.size());
+    if (!(rest.empty() || rest.starts_with(": ") || rest.starts_with(" "))) continue;
+    if (best == nullptr || place.size() > best->first.size()) best = &entry;
+  }
+  return best == nullptr ? where : best->second + where.substr(best->first.size());
+}
+
+std::string message_as_typed(const Error& e, const FlagNames& names) {
+  const std::string what = e.what();
+  return where_as_typed(e.where(), names) + what.substr(e.where().size());
+}
+
 void rethrow_with_flag(const Error& e, const FlagNames& names) {
-  const auto it = names.find(e.where());
-  if (it == names.end()) throw;
+  const std::string where = where_as_typed(e.where(), names);
+  if (where == e.where()) throw;
   // what() is "where: message"; keep the message, replace the place.
   const std::string message = std::string(e.what()).substr(e.where().size() + 2);
-  if (dynamic_cast<const RunError*>(&e) != nullptr) throw RunError(it->second, message);
-  throw Error(it->second, message);
+  if (dynamic_cast<const RunError*>(&e) != nullptr) throw RunError(where, message);
+  throw Error(where, message);
 }
 
 }  // namespace pneumachaos::cli

@@ -1,6 +1,7 @@
 #pragma once
-// Library errors name the option field that was wrong (e.g. "lyapunov.measure_s"); a user
-// typed a flag. Commands run their library calls through this so the message names the flag.
+// Library errors name the option field or the input that was wrong (e.g. "lyapunov.measure_s",
+// "override friction.Fx_N", "grid axis circuit.S1_mm2=3:2:1"); a user typed a flag. The CLI
+// translates those places into the flags they came from, so the library never names a flag.
 
 #include <map>
 #include <string>
@@ -9,8 +10,18 @@
 
 namespace pneumachaos::cli {
 
-/// Field name as the library reports it -> the flag the user typed.
+/// Place as the library reports it (or its first word(s), before ": " or " ") -> the flag.
 using FlagNames = std::map<std::string, std::string>;
+
+/// The places every command shares: scenario overrides, sweep grids and repeats, the output
+/// directory, a record's sampling rate.
+const FlagNames& common_flag_names();
+
+/// `where` with a leading place of `names` replaced by its flag; unchanged when none matches.
+std::string where_as_typed(const std::string& where, const FlagNames& names);
+
+/// e.what() with its place translated by where_as_typed.
+std::string message_as_typed(const Error& e, const FlagNames& names);
 
 /// The same error, of the same kind (Error or RunError), naming the flag instead of the field.
 [[noreturn]] void rethrow_with_flag(const Error& e, const FlagNames& names);

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "commands.hpp"
+#include "flag_names.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
@@ -69,12 +70,10 @@ int main(int argc, char** argv) {
     // fmt reports a failed write to standard output this way.
     fmt::print(stderr, "pneumachaos: error: cannot write output: {}\n", e.what());
     return pneumachaos::cli::kExitRunFailed;
-  } catch (const pneumachaos::RunError& e) {
-    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
-    return pneumachaos::cli::kExitRunFailed;
   } catch (const pneumachaos::Error& e) {
-    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
-    return pneumachaos::cli::kExitBadInput;
+    using namespace pneumachaos::cli;
+    fmt::print(stderr, "pneumachaos: error: {}\n", message_as_typed(e, common_flag_names()));
+    return dynamic_cast<const pneumachaos::RunError*>(&e) ? kExitRunFailed : kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "pneumachaos: internal error: {}\n", e.what());
     return 70;  // EX_SOFTWARE

@@ -222,7 +222,7 @@ std::vector<std::string> split_csv_fields(const std::string& line) {
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
   if (options.rate_Hz && !(std::isfinite(*options.rate_Hz) && *options.rate_Hz > 0.0)) {
-    throw Error("--rate", fmt::format("must be a positive number of Hz, got {}", *options.rate_Hz));
+    throw Error("sampling rate", fmt::format("must be a positive number of Hz, got {}", *options.rate_Hz));
   }
   // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
   constexpr std::string_view kBom = "\xEF\xBB\xBF";

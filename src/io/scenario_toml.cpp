@@ -113,10 +113,10 @@ void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignm
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0) {
-      throw Error("--set " + a, "expected key=value, e.g. --set friction.Fs_N=30");
+      throw Error("override " + a, "expected key=value, e.g. friction.Fs_N=30");
     }
     const std::string key = a.substr(0, eq);
-    const std::string where = "--set";
+    const std::string where = "override";
     apply_setting(scenario, key, parse_setting_text(key, a.substr(eq + 1), where), where);
     if (origins != nullptr) (*origins)[key] = where;
   }

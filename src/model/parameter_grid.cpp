@@ -24,7 +24,7 @@ double number(const std::string& text, const std::string& what, const std::strin
 }  // namespace
 
 GridAxis parse_grid_axis(const std::string& text) {
-  const std::string where = "--grid " + text;
+  const std::string where = "grid axis " + text;
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw Error(where, "expected KEY=FROM:TO:STEP, e.g. circuit.S2_mm2=0.05:4.40:0.15");
@@ -60,12 +60,12 @@ std::vector<GridAxis> paper_valve_grid() {
 }
 
 void validate_grid(const std::vector<GridAxis>& axes) {
-  if (axes.empty()) throw Error("--grid", "at least one grid axis is needed");
+  if (axes.empty()) throw Error("grid", "at least one grid axis is needed");
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    if (axes[i].values.empty()) throw Error("--grid " + axes[i].key, "the axis has no values");
+    if (axes[i].values.empty()) throw Error("grid axis " + axes[i].key, "the axis has no values");
     for (std::size_t j = 0; j < i; ++j) {
       if (axes[i].key == axes[j].key)
-        throw Error("--grid " + axes[i].key, "the key is gridded twice");
+        throw Error("grid axis " + axes[i].key, "the key is gridded twice");
     }
   }
 }

@@ -27,13 +27,13 @@ void check_out_dir(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(dir, ec)) return;
-  if (!fs::is_directory(dir, ec)) throw Error(dir, "--out exists and is not a directory");
+  if (!fs::is_directory(dir, ec)) throw Error(dir, "exists and is not a directory");
   if (fs::is_empty(dir, ec)) return;
   for (const char* mark : {"index.html", "figures", "sweeps"}) {
     if (fs::exists(fs::path(dir) / mark, ec)) return;
   }
   throw Error(dir,
-              "--out exists and is not an earlier report (no index.html, figures/ or sweeps/); "
+              "exists and is not an earlier report (no index.html, figures/ or sweeps/); "
               "choose a new or empty directory");
 }
 

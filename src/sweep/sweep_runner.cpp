@@ -22,7 +22,7 @@ namespace pneumachaos {
 bool sweeps_support_mpi() { return detail::Distribution::built_with_mpi(); }
 
 void SweepOptions::validate() const {
-  if (out_dir.empty()) throw Error("--out", "a directory for the results is required");
+  if (out_dir.empty()) throw Error("output directory", "a directory for the results is required");
 }
 
 namespace {

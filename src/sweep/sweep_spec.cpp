@@ -8,9 +8,9 @@ namespace pneumachaos {
 
 void SweepSpec::validate() const {
   validate_grid(axes);
-  if (repeats == 0) throw Error("--repeats", "must be at least 1");
+  if (repeats == 0) throw Error("repeats", "must be at least 1");
   if (runs() > 10'000'000)
-    throw Error("--grid", fmt::format("{} runs is more than 10 million", runs()));
+    throw Error("grid", fmt::format("{} runs is more than 10 million", runs()));
   base.validate();
 }
 
