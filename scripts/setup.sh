@@ -9,7 +9,7 @@ packages=(
   libnanoflann-dev libkissfft-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libceres-dev
+  libceres-dev libtbb-dev
   gnuplot-nox
   chromium
   libopenmpi-dev openmpi-bin

@@ -11,6 +11,10 @@
 #include <mutex>
 #include <thread>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include "distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -129,32 +133,39 @@ class Progress {
 void run_pending(const SweepSpec& spec, const SweepOptions& options,
                  const std::vector<std::size_t>& pending, detail::Journal& journal,
                  std::vector<RunRecord>& records, const detail::Distribution& dist) {
-  std::atomic<std::size_t> next{0};
   std::mutex mutex;
   std::size_t finished = 0;
   std::exception_ptr failure;
   Progress progress(options.progress && ::isatty(STDERR_FILENO) != 0, spec.runs(),
                     spec.runs() - pending.size());
-  const auto worker = [&] {
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      RunRecord r = guarded_run(spec, pending[k]);
-      std::lock_guard<std::mutex> lock(mutex);
-      if (failure) return;
-      try {
-        journal.append(r);
-      } catch (...) {
-        failure = std::current_exception();
-        return;
-      }
-      records.push_back(std::move(r));
-      progress.update(++finished, pending.size());
-      if (options.on_progress) options.on_progress(spec.runs() - pending.size() + finished, spec.runs());
+  std::atomic<bool> stop{false};
+  const auto one = [&](std::size_t k) {
+    if (stop) return;  // the journal failed: take no new runs
+    RunRecord r = guarded_run(spec, pending[k]);
+    std::lock_guard<std::mutex> lock(mutex);
+    if (failure) return;
+    try {
+      journal.append(r);
+    } catch (...) {
+      failure = std::current_exception();
+      stop = true;
+      return;
     }
+    records.push_back(std::move(r));
+    progress.update(++finished, pending.size());
+    if (options.on_progress) options.on_progress(spec.runs() - pending.size() + finished, spec.runs());
   };
-  std::vector<std::thread> pool;
-  const std::size_t threads = thread_count(options.threads, pending.size(), dist);
-  for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+  // oneTBB's work-stealing scheduler, limited to the requested threads by an arena; one run
+  // per task (grain 1), as runs differ in cost by an order of magnitude.
+  const auto threads = static_cast<int>(thread_count(options.threads, pending.size(), dist));
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t k = range.begin(); k != range.end(); ++k) one(k);
+                      },
+                      tbb::simple_partitioner());
+  });
   if (failure) std::rethrow_exception(failure);
 }
 
