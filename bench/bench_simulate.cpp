@@ -14,7 +14,7 @@ void run(benchmark::State& state, Scenario s) {
   s.run.duration_s = 10.0;
   s.cylinder.stroke_m = 2.0;  // long enough that the full 10 s are simulated
   const Plant plant(s);
-  const auto options = SimulationOptions::from(s.run);
+  const auto options = s.run;
   double simulated = 0.0;
   std::size_t events = 0;
   for (auto _ : state) {
@@ -53,7 +53,7 @@ void BM_VirtualRigChaotic(benchmark::State& state) {
   const Plant plant(default_scenario());
   Scenario s = default_scenario();
   s.run.duration_s = 10.0;
-  const auto options = SimulationOptions::from(s.run);
+  const auto options = s.run;
   double simulated = 0.0;
   for (auto _ : state) {
     const auto r = simulate(plant, options);

@@ -65,7 +65,7 @@ py::dict simulate_py(const Scenario& scenario) {
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    r = simulate(Plant(scenario), SimulationOptions::from(scenario.run));
+    r = simulate(Plant(scenario), scenario.run);
   }
   py::dict out;
   out["ok"] = r.summary.ok();

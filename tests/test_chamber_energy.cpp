@@ -146,7 +146,7 @@ TEST(ChamberEnergy, StictionStillHoldsTheVelocityAtExactlyZero) {
   Scenario s = energy_rig(20.0);
   s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip on the simple rig
   const Plant plant(s);
-  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  const auto r = simulate(plant, s.run);
   ASSERT_TRUE(r.summary.ok()) << r.summary.message;
   EXPECT_GE(r.summary.events.stick, 3u);
   const auto& T2 = r.series.channel("T2").values;

@@ -146,7 +146,7 @@ TEST(FrictionLag, StictionHoldsAndTheLagRecoversWhileStuck) {
   s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip on the simple rig
   const Plant plant(s);
   EXPECT_EQ(plant.initial_state()[plant.layout().seal_z], 1.0);  // rested before the start
-  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  const auto r = simulate(plant, s.run);
   ASSERT_TRUE(r.summary.ok()) << r.summary.message;
   EXPECT_GE(r.summary.events.stick, 3u);
   const auto& lag = r.series.channel("s_lag").values;

@@ -103,7 +103,7 @@ TEST(Plant, TrueStictionHoldsPositionWhilePressuresEvolve) {
   Scenario s = simple_rig_scenario();
   s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip
   const Plant plant(s);
-  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  const auto r = simulate(plant, s.run);
   ASSERT_TRUE(r.summary.ok()) << r.summary.message;
   EXPECT_GE(r.summary.events.stick, 3u);
   EXPECT_GE(r.summary.events.slip, 3u);
@@ -121,7 +121,7 @@ TEST(Plant, TrueStictionHoldsPositionWhilePressuresEvolve) {
 TEST(Plant, BreaksAwayFromTheStopWhenDriveExceedsStaticFriction) {
   const Scenario s = simple_rig_scenario();
   const Plant plant(s);
-  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  const auto r = simulate(plant, s.run);
   ASSERT_FALSE(r.summary.event_log.empty());
   EXPECT_EQ(r.summary.event_log.front().kind, EventKind::kStopRelease);
   const double t_release = r.summary.event_log.front().t_s;
@@ -137,7 +137,7 @@ TEST(Plant, RunEndsAtTheEndOfStroke) {
   Scenario s = simple_rig_scenario();
   s.cylinder.stroke_m = 0.1;
   const Plant plant(s);
-  const auto r = simulate(plant, SimulationOptions::from(s.run));
+  const auto r = simulate(plant, s.run);
   EXPECT_EQ(r.summary.termination, Termination::kTerminalEvent);
   for (double x : r.series.channel("x").values) EXPECT_LE(x, 0.1);
   EXPECT_LT(r.summary.t_final_s, s.run.duration_s);
@@ -148,7 +148,7 @@ TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
   s.friction.kind = FrictionKind::kLuGre;
   s.run.duration_s = 3.0;
   const Plant plant(s);
-  auto o = SimulationOptions::from(s.run);
+  auto o = s.run;
   const auto a = simulate(plant, o);
   o.stepper = StepperKind::kRosenbrock4;
   const auto b = simulate(plant, o);

@@ -199,7 +199,7 @@ Measured simulate_mode(const Plant& plant, const Equilibrium& e, std::complex<do
   if (std::abs(direction[0]) < 1e-12) direction = solver.eigenvectors().col(best).imag();
   const Eigen::VectorXd y =
       reduced_state(plant, e).value + direction * (dv_amplitude / direction[0]);
-  SimulationOptions o;
+  RunParams o;
   o.duration_s = duration_s;
   o.sample_rate_Hz = 10000.0;
   o.relative_tolerance = 1e-10;

@@ -51,7 +51,7 @@ TEST(VirtualRig, PeriodicPointOfTheSameScenarioIsNeutral) {
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_LT(std::abs(r.lambda_per_s), 0.1);
   // ...and its record is judged periodic from the velocity alone.
-  SimulationOptions o = SimulationOptions::from(s.run);
+  RunParams o = s.run;
   o.duration_s = 20.0;
   const SimulationResult sim = simulate(plant, o);
   const AnalysisResult a = analyze_series(sim.series.channel("v").values, 1000.0);
@@ -62,7 +62,7 @@ TEST(VirtualRig, TimeSeriesEstimatorsSeeTheChaosInTheVelocityRecord) {
   // The 1 kHz piston velocity record of the default point, analysed as a measured record.
   const Scenario s = default_scenario();
   const Plant plant(s);
-  SimulationOptions o = SimulationOptions::from(s.run);
+  RunParams o = s.run;
   o.duration_s = 30.0;
   const SimulationResult sim = simulate(plant, o);
   ASSERT_TRUE(sim.summary.ok());

@@ -5,8 +5,8 @@
 
 namespace pneumachaos {
 
-inline SimulationOptions tight(double duration) {
-  SimulationOptions o;
+inline RunParams tight(double duration) {
+  RunParams o;
   o.duration_s = duration;
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-12;

@@ -51,7 +51,7 @@ Action add_simulate(CLI::App& app) {
     flag("run.rate_Hz", args->rate_Hz, "--rate");
     validate_scenario(scenario, origins);
     const Plant plant(scenario);
-    const SimulationResult result = simulate(plant, SimulationOptions::from(scenario.run));
+    const SimulationResult result = simulate(plant, scenario.run);
     fmt::print(stderr, "simulate: {}\n", describe(result.summary));
     if (!result.summary.ok()) {
       fmt::print(stderr, "simulate: the run failed; no output written\n");

@@ -43,7 +43,7 @@ constexpr double kSettle_s = 2.0;
 SimulationResult run(Scenario s, double duration_s) {
   s.run.duration_s = duration_s;
   const Plant plant(s);
-  SimulationResult r = simulate(plant, SimulationOptions::from(s.run));
+  SimulationResult r = simulate(plant, s.run);
   if (!r.summary.ok()) throw Error("reproduce", "a simulation failed: " + r.summary.message);
   return r;
 }

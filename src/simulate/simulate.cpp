@@ -6,43 +6,32 @@
 
 namespace pneumachaos {
 
-SimulationOptions SimulationOptions::from(const RunParams& run) {
-  SimulationOptions o;
-  o.duration_s = run.duration_s;
-  o.sample_rate_Hz = run.sample_rate_Hz;
+IntegratorOptions integrator_options(const RunParams& run) {
+  IntegratorOptions o;
+  o.t_start_s = 0.0;
+  o.t_end_s = run.duration_s;
   o.relative_tolerance = run.relative_tolerance;
   o.absolute_tolerance = run.absolute_tolerance;
   o.max_step_s = run.max_step_s;
   o.stepper = run.stepper;
-  return o;
-}
-
-IntegratorOptions SimulationOptions::integrator_options() const {
-  IntegratorOptions o;
-  o.t_start_s = 0.0;
-  o.t_end_s = duration_s;
-  o.relative_tolerance = relative_tolerance;
-  o.absolute_tolerance = absolute_tolerance;
-  o.max_step_s = max_step_s;
-  o.stepper = stepper;
-  o.sample_rate_Hz = sample_rate_Hz;
+  o.sample_rate_Hz = run.sample_rate_Hz;
   // A budget of steps per simulated second, 10-100x what the stiffest default-rig runs need,
   // so that an absurd step size or stiffness fails within about a second of work, not minutes.
   constexpr double kStepsPerSimulatedSecond = 1e5;
   o.max_steps = static_cast<std::size_t>(
-      std::clamp(kStepsPerSimulatedSecond * duration_s, 1e5, static_cast<double>(o.max_steps)));
+      std::clamp(kStepsPerSimulatedSecond * run.duration_s, 1e5, static_cast<double>(o.max_steps)));
   return o;
 }
 
-SimulationResult simulate(const Plant& plant, const SimulationOptions& options) {
-  return simulate_from(plant, plant.initial_state(), options);
+SimulationResult simulate(const Plant& plant, const RunParams& run) {
+  return simulate_from(plant, plant.initial_state(), run);
 }
 
 SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,
-                               const SimulationOptions& options) {
-  const IntegratorOptions io = options.integrator_options();
+                               const RunParams& run) {
+  const IntegratorOptions io = integrator_options(run);
   io.validate();
-  SimulationResult result{TimeSeries(options.sample_rate_Hz), {}};
+  SimulationResult result{TimeSeries(run.sample_rate_Hz), {}};
   TimeSeries& ts = result.series;
   const StateLayout& L = plant.layout();
   ts.add_channel("x", "m");

@@ -45,7 +45,7 @@ SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repe
   run.repeat = repeat;
   run.seed = run_seed(spec.seed, point, repeat);
   run.scenario = vary(scenario_at(spec.base, spec.axes, grid_index(spec.axes, point)), run.seed);
-  run.sim = simulate(Plant(run.scenario), SimulationOptions::from(run.scenario.run));
+  run.sim = simulate(Plant(run.scenario), run.scenario.run);
   if (run.sim.summary.ok()) run.measured_v = measured_velocity(run);
   return run;
 }

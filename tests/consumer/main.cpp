@@ -7,7 +7,7 @@
 int main() {
   const pneumachaos::Scenario s = pneumachaos::build_scenario("", {"run.duration_s=2"});
   const pneumachaos::Plant plant(s);
-  const auto r = pneumachaos::simulate(plant, pneumachaos::SimulationOptions::from(s.run));
+  const auto r = pneumachaos::simulate(plant, s.run);
   std::printf("simulated %zu samples\n", r.series.size());
   return r.summary.ok() ? 0 : 1;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pneumachaos/core/hybrid_system.hpp"
+#include "pneumachaos/core/run_settings.hpp"
 #include "pneumachaos/model/cylinder.hpp"
 #include "pneumachaos/model/friction.hpp"
 #include "pneumachaos/model/valve_flow.hpp"
@@ -63,15 +64,6 @@ struct ThermalParams {
   /// order 2-250 W/(m^2 K) (docs/model.md gives the range and why 20).
   double heat_transfer_W_per_m2K = 20.0;
   double wall_temperature_K = 293.15;  ///< cylinder wall, taken constant (large heat capacity)
-};
-
-struct RunParams {
-  double duration_s = 10.0;
-  double sample_rate_Hz = 1000.0;
-  double relative_tolerance = 1e-7;
-  double absolute_tolerance = 1e-10;
-  double max_step_s = 2e-3;  ///< bounds the step so short event excursions are not stepped over
-  StepperKind stepper = StepperKind::kDopri5;
 };
 
 struct Scenario {

@@ -5,23 +5,15 @@
 #include <vector>
 
 #include "pneumachaos/core/time_series.hpp"
+#include "pneumachaos/core/run_settings.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/event_integrator.hpp"
 
 namespace pneumachaos {
 
-struct SimulationOptions {
-  double duration_s = 10.0;
-  double sample_rate_Hz = 1000.0;
-  double relative_tolerance = 1e-7;
-  double absolute_tolerance = 1e-10;
-  double max_step_s = 2e-3;
-  StepperKind stepper = StepperKind::kDopri5;
-
-  /// The run settings of a scenario (its [run] table).
-  static SimulationOptions from(const RunParams& run);
-  [[nodiscard]] IntegratorOptions integrator_options() const;
-};
+/// The integrator's settings for a run of `run.duration_s` from t = 0, with a step budget
+/// that makes an absurd step size or stiffness fail fast.
+IntegratorOptions integrator_options(const RunParams& run);
 
 struct SimulationResult {
   /// Channels: x [m], v [m/s], P1 [Pa], P2 [Pa], F_friction [N] (seal), the friction internal
@@ -31,11 +23,11 @@ struct SimulationResult {
 };
 
 /// Simulates from the start of a run of docs/model.md (directional valve switching at t = 0).
-SimulationResult simulate(const Plant& plant, const SimulationOptions& options);
+SimulationResult simulate(const Plant& plant, const RunParams& run);
 
 /// Simulates from a given state (e.g. near an equilibrium).
 SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,
-                               const SimulationOptions& options);
+                               const RunParams& run);
 
 /// A one-paragraph human-readable account of a run's summary.
 std::string describe(const IntegrationSummary& summary);
