@@ -5,8 +5,8 @@
 #include <string>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

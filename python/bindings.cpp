@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/analysis_output.hpp"
-#include "pneumachaos/io/lyapunov_output.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
-#include "pneumachaos/io/stability_output.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/simulate/lyapunov_output.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
+#include "pneumachaos/stability/stability_output.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace py = pybind11;

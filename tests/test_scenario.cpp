@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/stability/linearization.hpp"
 #include "pneumachaos/stability/stability_map.hpp"

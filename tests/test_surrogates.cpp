@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/fft.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/analysis_output.hpp"
 #include "validation_corpus.hpp"
 
 namespace pneumachaos {

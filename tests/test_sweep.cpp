@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/model/variation.hpp"
 
 namespace pneumachaos {

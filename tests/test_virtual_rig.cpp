@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 

@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/analysis_output.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 

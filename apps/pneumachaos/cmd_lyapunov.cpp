@@ -9,8 +9,8 @@
 #include "commands.hpp"
 #include "flag_names.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
-#include "pneumachaos/io/lyapunov_output.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/simulate/lyapunov_output.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 

@@ -8,8 +8,8 @@
 #include "commands.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_writer.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos::cli {

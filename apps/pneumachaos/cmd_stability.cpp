@@ -8,8 +8,8 @@
 #include "commands.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
-#include "pneumachaos/io/scenario_toml.hpp"
-#include "pneumachaos/io/stability_output.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/stability/stability_output.hpp"
 
 namespace pneumachaos::cli {
 

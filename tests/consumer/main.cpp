@@ -1,7 +1,7 @@
 // Simulates the default scenario through the installed library and reports the record.
 #include <cstdio>
 
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
 int main() {

@@ -1,11 +1,11 @@
-#include "pneumachaos/io/lyapunov_output.hpp"
+#include "pneumachaos/simulate/lyapunov_output.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <numbers>
 
-#include "json_quantity.hpp"
+#include "pneumachaos/io/json_quantity.hpp"
 
 namespace pneumachaos {
 

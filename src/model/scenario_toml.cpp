@@ -1,4 +1,4 @@
-#include "pneumachaos/io/scenario_toml.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>

@@ -1,10 +1,10 @@
-#include "pneumachaos/io/stability_output.hpp"
+#include "pneumachaos/stability/stability_output.hpp"
 
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
-#include "json_quantity.hpp"
+#include "pneumachaos/io/json_quantity.hpp"
 
 namespace pneumachaos {
 namespace {

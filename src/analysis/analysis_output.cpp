@@ -1,4 +1,4 @@
-#include "pneumachaos/io/analysis_output.hpp"
+#include "pneumachaos/analysis/analysis_output.hpp"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "pneumachaos/core/error.hpp"
-#include "json_quantity.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/json_quantity.hpp"
 
 namespace pneumachaos {
 namespace {
