@@ -89,7 +89,7 @@ Action add_sweep(CLI::App& app) {
   CLI::Option* model =
       cmd->add_flag("--model-exponent", args->model.enabled,
                     "also store each run's model exponent (as `lyapunov`) over the rest of its "
-                    "stroke, with its uncertainty (much slower)");
+                    "stroke, with its uncertainty (about 1.5x the time per run)");
   cmd->add_option("--model-transient", args->model.transient_s,
                   "with --model-exponent: seconds of start-up discarded (default 1)")
       ->needs(model);

@@ -34,7 +34,7 @@ struct SweepSpec {
   std::size_t repeats = 5;
   std::uint64_t seed = 1;
   bool wolf = false;  ///< also run Wolf's estimator per run (slower; the verdict does not use it)
-  ModelExponentSpec model_exponent;  ///< slower still: two trajectories at tight tolerances
+  ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
   void validate() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
   [[nodiscard]] std::size_t runs() const { return points() * repeats; }
