@@ -1,14 +1,16 @@
 // Sweeps: incidence arithmetic, reproducible repeats, determinism across threads, journal.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <algorithm>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
@@ -73,8 +75,8 @@ TEST(Sweep, IncidenceArithmeticOnKnownVerdicts) {
   // Incidence of each regime: fractions of the successful runs, in sweep_regime_names() order.
   const auto& names = sweep_regime_names();
   const auto share = [&](std::size_t p, const std::string& name) {
-    return s.per_point[p].regime_incidence.at(
-        std::find(names.begin(), names.end(), name) - names.begin());
+    return s.per_point[p].regime_incidence.at(std::find(names.begin(), names.end(), name) -
+                                              names.begin());
   };
   EXPECT_DOUBLE_EQ(share(0, "stick-slip"), 1.0);
   EXPECT_DOUBLE_EQ(share(1, "chaotic"), 1.0);
@@ -237,6 +239,115 @@ TEST(Sweep, AFailedRunIsRecordedAndTheSweepGoesOn) {
   EXPECT_EQ(s.failed, 4u);
   EXPECT_NE(slurp(dir + "/runs.csv").find("must be smaller than the bore"), std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+TEST(Sweep, AJournalOfTheOlderRecordFormatIsRefusedAsAnotherVersion) {
+  const SweepSpec spec = small_spec();
+  const std::string dir = finished_sweep(spec, "oldformat");
+  const std::string journal = slurp(dir + "/journal.csv");
+  const std::string header = journal.substr(0, journal.find('\n'));
+  const std::string fields = fmt::format(", {} fields", RunRecord::kFields);
+  ASSERT_EQ(header.substr(header.size() - fields.size()), fields);
+  // The same sweep's header as the 21-field format before the model-exponent columns wrote it.
+  std::ofstream(dir + "/journal.csv", std::ios::binary)
+      << header.substr(0, header.size() - fields.size()) << ", 21 fields\n";
+  const std::string message = resume_error(spec, dir);
+  EXPECT_NE(message.find("another version of pneumachaos (records of 21 fields; this version "
+                         "writes 24 fields)"),
+            std::string::npos)
+      << message;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Sweep, ARecordWithTheModelExponentRoundTrips) {
+  RunRecord r;
+  r.point = 3;
+  r.lambda_model = 4.0 / 3.0;
+  r.lambda_model_uncertainty = 0.1;
+  r.lambda_model_span_s = 6.48;
+  r.reason = "model exponent: why";
+  const RunRecord back = RunRecord::decode(r.encode());
+  EXPECT_EQ(back.lambda_model, r.lambda_model);
+  EXPECT_EQ(back.lambda_model_uncertainty, r.lambda_model_uncertainty);
+  EXPECT_EQ(back.lambda_model_span_s, r.lambda_model_span_s);
+  EXPECT_EQ(back.reason, r.reason);
+  EXPECT_TRUE(std::isnan(RunRecord::decode(RunRecord{}.encode()).lambda_model));
+}
+
+// The sweep's model exponent of a run is `lyapunov`'s on the same settings, bit for bit: at
+// the frozen chaotic point (docs/virtual_rig.md: 4.07 +- 0.36 1/s over 60 s) beyond 3 sigma,
+// at the stick-slip point S2 = 0.05 mm^2 not.
+// One run per point, with the model's exponent.
+SweepSpec model_exponent_spec(const std::vector<std::string>& sets, const std::string& grid) {
+  SweepSpec spec;
+  spec.base = build_scenario("", sets);
+  spec.axes = {parse_grid_axis(grid)};
+  spec.repeats = 1;
+  spec.model_exponent.enabled = true;
+  return spec;
+}
+
+TEST(Sweep, ModelExponentPerRunIsThePlantsOwnOverTheRun) {
+  const SweepSpec spec = model_exponent_spec({"run.duration_s=7"}, "circuit.S2_mm2=0.05:0.35:0.30");
+  spec.validate();
+  const SweepSummary s = summarize(spec, {run_one(spec, 0, 0), run_one(spec, 1, 0)});
+  for (std::size_t p = 0; p < 2; ++p) {
+    const RunRecord r = run_one(spec, p, 0);
+    const Scenario at = scenario_at(spec.base, spec.axes, grid_index(spec.axes, p));
+    const ModelLyapunovResult m =
+        plant_lyapunov(Plant(at), at.run, spec.model_exponent.options(at.run.duration_s));
+    ASSERT_TRUE(m.ok) << m.message;
+    EXPECT_EQ(r.lambda_model, m.lambda_per_s);
+    EXPECT_EQ(r.lambda_model_uncertainty, m.uncertainty_per_s);
+    EXPECT_NEAR(r.lambda_model_span_s, 6.0, 1e-9);
+    const bool beyond_3_sigma = r.lambda_model > 3.0 * r.lambda_model_uncertainty;
+    EXPECT_EQ(beyond_3_sigma, p == 1) << r.lambda_model << " +- " << r.lambda_model_uncertainty;
+    EXPECT_EQ(s.per_point[p].model_chaos_incidence, p == 1 ? 1.0 : 0.0);
+  }
+  EXPECT_EQ(s.model_chaos_full_points, 1u);
+}
+
+// Volumes following the piston: the measurement ends where the stroke does, not in failure.
+TEST(Sweep, ModelExponentWithAMovingPistonSpansTheRestOfTheStroke) {
+  const SweepSpec spec = model_exponent_spec(
+      {"cylinder.frozen_position_mm=-1", "cylinder.stroke_mm=200", "run.duration_s=20"},
+      "circuit.S2_mm2=0.35:0.35:0.1");
+  const RunRecord r = run_one(spec, 0, 0);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.termination, "terminal_event");
+  ASSERT_TRUE(std::isfinite(r.lambda_model)) << r.reason;
+  // The stroke, not the 19 s asked for, ends it: near where the simulated record ends.
+  EXPECT_LT(r.lambda_model_span_s, 19.0);
+  EXPECT_NEAR(spec.model_exponent.transient_s + r.lambda_model_span_s, r.t_final_s, 0.2);
+}
+
+std::string validation_error(const SweepSpec& spec) {
+  try {
+    spec.validate();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Sweep, ModelExponentSettingsAreCheckedByTheirFlags) {
+  SweepSpec spec = small_spec();  // 2 s runs
+  spec.model_exponent.enabled = true;
+  spec.model_exponent.transient_s = 2.0;
+  EXPECT_EQ(validation_error(spec).find("--model-transient: 2 s: must be >= 0 and shorter"), 0u)
+      << validation_error(spec);
+  spec.model_exponent.transient_s = 1.0;
+  spec.model_exponent.measure_s = 0.1;
+  EXPECT_EQ(validation_error(spec).find("--model-measure: 0.1 s of measurement hold fewer than 10"),
+            0u)
+      << validation_error(spec);
+  spec.model_exponent.measure_s = -1.0;
+  EXPECT_EQ(validation_error(spec).find("--model-measure: -1 s: must be a number >= 0"), 0u)
+      << validation_error(spec);
+  spec.model_exponent.measure_s = 0.0;
+  spec.model_exponent.renormalize_s = 0.0;
+  EXPECT_EQ(validation_error(spec).find("--model-renormalize: 0 s: must be a positive number"), 0u)
+      << validation_error(spec);
 }
 
 }  // namespace

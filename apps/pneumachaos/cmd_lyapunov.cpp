@@ -39,6 +39,9 @@ Action add_lyapunov(CLI::App& app) {
   cmd->add_option(
       "--tolerance-factor", args->tolerance_factor,
       "multiply the integration tolerances (rtol 1e-9, atol 1e-12; e.g. 0.5 to confirm)");
+  cmd->add_flag("--until-stroke-end", args->o.until_terminal_event,
+                "a stroke end during the measurement ends it there (the exponent spans the "
+                "time measured) instead of failing the run");
   cmd->add_option("--running-out", args->running_out, "CSV file for the running estimate");
   cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
   return [args]() {

@@ -65,6 +65,7 @@ Action add_sweep(CLI::App& app) {
     std::string out;
     bool resume = false;
     bool wolf = false;
+    ModelExponentSpec model;
     std::string replay;
     std::string record;
   };
@@ -85,6 +86,20 @@ Action add_sweep(CLI::App& app) {
   cmd->add_option("--out", args->out, "directory for the journal and the results");
   cmd->add_flag("--resume", args->resume, "finish an interrupted sweep in --out");
   cmd->add_flag("--wolf", args->wolf, "also run Wolf's estimator on every record (slower)");
+  CLI::Option* model =
+      cmd->add_flag("--model-exponent", args->model.enabled,
+                    "also store each run's model exponent (as `lyapunov`) over the rest of its "
+                    "stroke, with its uncertainty (about 1.5x the time per run)");
+  cmd->add_option("--model-transient", args->model.transient_s,
+                  "with --model-exponent: seconds of start-up discarded (default 1)")
+      ->needs(model);
+  cmd->add_option("--model-measure", args->model.measure_s,
+                  "with --model-exponent: at most this many seconds measured (default 0: the "
+                  "rest of the run, to its stroke end)")
+      ->needs(model);
+  cmd->add_option("--model-renormalize", args->model.renormalize_s,
+                  "with --model-exponent: renormalisation interval [s] (default 0.02)")
+      ->needs(model);
   cmd->add_option("--replay", args->replay,
                   "POINT:REPEAT: run only that run of this sweep again (same grid, repeats and "
                   "seed) and write its record; its runs.csv line goes to standard error");
@@ -103,6 +118,7 @@ Action add_sweep(CLI::App& app) {
     spec.repeats = args->repeats.value_or(file.repeats.value_or(5));
     spec.seed = args->seed.value_or(file.seed.value_or(1));
     spec.wolf = args->wolf;
+    spec.model_exponent = args->model;
     if (!args->replay.empty()) return replay(spec, args->replay, args->record);
     if (!args->record.empty()) throw Error("--record", "needs --replay");
     SweepOptions options;
@@ -116,6 +132,12 @@ Action add_sweep(CLI::App& app) {
         "100 %-chaos region {} points, chaos anywhere {} points; results in {}\n",
         s.points, spec.repeats, s.runs, s.failed, s.stick_slip_points, s.chaos_full_points,
         s.chaos_any_points, args->out);
+    if (spec.model_exponent.enabled) {
+      fmt::print(
+          "model exponent beyond 3 sigma: in every run at {} points, in some run at {} "
+          "points\n",
+          s.model_chaos_full_points, s.model_chaos_any_points);
+    }
     return kExitOk;
   };
 }

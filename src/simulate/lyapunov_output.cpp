@@ -13,10 +13,13 @@ std::string lyapunov_summary(const ModelLyapunovResult& r, const ModelLyapunovOp
   std::string out = fmt::format(
       "largest Lyapunov exponent of the model: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s)\n",
       r.lambda_per_s, r.uncertainty_per_s, r.lambda_per_s / std::numbers::ln2);
+  // A stroke end may have cut the measurement short (until_terminal_event): say so.
+  const bool cut = r.measured_s > 0.0 && r.measured_s < o.measure_s - 0.5 * o.renormalize_s;
   out += fmt::format(
-      "{} renormalisations every {} s over {} s after {} s of transient ({} postponed "
-      "while the two trajectories were in different stick/slip modes)\n",
-      r.renormalizations, o.renormalize_s, o.measure_s, o.transient_s, r.postponed);
+      "{} renormalisations every {} s over {:.6g} s after {} s of transient ({} postponed "
+      "while the two trajectories were in different stick/slip modes){}\n",
+      r.renormalizations, o.renormalize_s, cut ? r.measured_s : o.measure_s, o.transient_s,
+      r.postponed, cut ? "; the run reached its stroke end" : "");
   out += "convergence (running estimate, 1/s):";
   const std::size_t n = r.running_per_s.size();
   for (std::size_t k = 1; k <= 8 && n > 0; ++k) {
@@ -36,6 +39,7 @@ std::string lyapunov_json(const ModelLyapunovResult& r, const ModelLyapunovOptio
         {"bits", json_quantity(r.lambda_per_s / std::numbers::ln2, "bit/s")},
         {"renormalizations", r.renormalizations},
         {"postponed", r.postponed},
+        {"measured", json_quantity(r.measured_s, "s")},
         {"running", running}}},
       {"settings",
        {{"transient", json_quantity(o.transient_s, "s")},

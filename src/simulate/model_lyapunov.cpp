@@ -35,14 +35,28 @@ IntegratorOptions trajectory_options(const ModelLyapunovOptions& o) {
   return io;
 }
 
-// Standard error of the exponent from the spread of the per-block exponents.
-double block_standard_error(const std::vector<double>& block_log, const ModelLyapunovOptions& o) {
-  const double block_s = o.measure_s / o.blocks;
+// Standard error of the exponent from the spread of the per-block exponents, each block
+// span_s / blocks long.
+double block_standard_error(const std::vector<double>& block_log, double span_s) {
+  const double blocks = static_cast<double>(block_log.size());
+  const double block_s = span_s / blocks;
   double mean = 0.0, var = 0.0;
   for (double b : block_log) mean += b / block_s;
-  mean /= o.blocks;
+  mean /= blocks;
   for (double b : block_log) var += std::pow(b / block_s - mean, 2);
-  return std::sqrt(var / (o.blocks - 1) / o.blocks);
+  return std::sqrt(var / (blocks - 1) / blocks);
+}
+
+// The stretching per block when the measurement ended early (a stroke end): the gains, at
+// their renormalisation times, binned over the span actually measured.
+std::vector<double> rebin(const std::vector<double>& gains, const std::vector<double>& times,
+                          double t0, double span_s, std::size_t blocks) {
+  std::vector<double> block_log(blocks, 0.0);
+  for (std::size_t i = 0; i < gains.size(); ++i) {
+    const double share = (times[i] - t0) / span_s * static_cast<double>(blocks);
+    block_log[std::min(blocks - 1, static_cast<std::size_t>(share))] += gains[i];
+  }
+  return block_log;
 }
 
 // Two trajectories side by side, renormalised to the initial separation at fixed intervals
@@ -79,7 +93,13 @@ class TwoTrajectories {
     std::vector<double> block_log(o_.blocks, 0.0);
     while (t_ < t_end - 1e-12) {
       const double next = std::min(t_ + o_.renormalize_s, t_end);
-      if (!advance_both(next, r)) break;
+      if (!advance_both(next, r)) {
+        if (ended_) {  // measured up to the last renormalisation: a result, not a failure
+          r.ok = true;
+          r.message.clear();
+        }
+        break;
+      }
       t_ = next;
       if (!(mr_ == mp_) && t_ < t_end) {
         ++r.postponed;  // renormalise once both are in the same mode again
@@ -92,6 +112,9 @@ class TwoTrajectories {
 
   [[nodiscard]] double start_s() const { return t0_; }
   [[nodiscard]] double log_sum() const { return log_sum_; }  ///< of the stretching factors
+  /// True when a terminal event ended the measurement early (until_terminal_event).
+  [[nodiscard]] bool ended() const { return ended_; }
+  [[nodiscard]] const std::vector<double>& gains() const { return gains_; }
 
  private:
   IntegrationSummary advance(std::vector<double>& x, Mode& mode, double from, double to) {
@@ -107,6 +130,8 @@ class TwoTrajectories {
         b.termination == Termination::kDurationReached) {
       return true;
     }
+    ended_ = o_.until_terminal_event && (a.termination == Termination::kTerminalEvent ||
+                                         b.termination == Termination::kTerminalEvent);
     r.ok = false;
     r.message =
         fmt::format("a trajectory ended at t = {:.4g} s before the measurement did: {}", next,
@@ -125,6 +150,7 @@ class TwoTrajectories {
     }
     const double gain = std::log(d / o_.separation);
     log_sum_ += gain;
+    gains_.push_back(gain);
     const std::size_t block =
         std::min(o_.blocks - 1, static_cast<std::size_t>((t_ - t0_) / o_.measure_s * o_.blocks));
     block_log[block] += gain;
@@ -146,6 +172,8 @@ class TwoTrajectories {
   Mode mr_, mp_;
   double t_ = 0.0, t0_ = 0.0;
   double log_sum_ = 0.0;
+  std::vector<double> gains_;  // one per renormalisation, at r.running_time_s
+  bool ended_ = false;
 };
 
 }  // namespace
@@ -188,15 +216,28 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
   ModelLyapunovResult r;
   TwoTrajectories pair(system, o, std::move(scale));
   if (!pair.settle(x0, r)) return r;
-  const std::vector<double> block_log = pair.measure(r);
+  std::vector<double> block_log = pair.measure(r);
+  if (pair.ended() && r.running_per_s.size() < o.blocks) {
+    r.ok = false;
+    r.message = fmt::format(
+        "the run reached its end after {} renormalisations; the {} blocks "
+        "of the uncertainty need at least one each",
+        r.running_per_s.size(), o.blocks);
+    return r;
+  }
   if (r.running_per_s.empty()) {
     if (r.message.empty()) r.message = "no renormalisation took place";
     r.ok = false;
     return r;
   }
-  const double measured = r.running_time_s.back() - pair.start_s();
-  r.lambda_per_s = pair.log_sum() / measured;
-  r.uncertainty_per_s = block_standard_error(block_log, o);
+  r.measured_s = r.running_time_s.back() - pair.start_s();
+  r.lambda_per_s = pair.log_sum() / r.measured_s;
+  if (pair.ended()) {
+    block_log = rebin(pair.gains(), r.running_time_s, pair.start_s(), r.measured_s, o.blocks);
+    r.uncertainty_per_s = block_standard_error(block_log, r.measured_s);
+  } else {
+    r.uncertainty_per_s = block_standard_error(block_log, o.measure_s);
+  }
   return r;
 }
 

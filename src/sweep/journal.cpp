@@ -17,12 +17,21 @@ namespace {
 
 constexpr const char* kHeaderStart = "# pneumachaos sweep journal, spec ";
 
-
 // The first line must be this sweep's header; a journal of another sweep and a damaged one
 // (no header at all) are refused with different words, since the remedies differ.
 void check_header(const std::string& line, const std::string& path,
                   const std::string& fingerprint) {
   if (line == journal_header(fingerprint)) return;
+  // Same sweep, other record format (e.g. before the model-exponent columns): say so, since
+  // resuming would mix records of two formats.
+  const std::string own = journal_header(fingerprint);
+  const std::string same_spec = own.substr(0, own.rfind(", ") + 2);
+  if (line.rfind(same_spec, 0) == 0) {
+    throw Error(path, fmt::format("the journal was written by another version of pneumachaos "
+                                  "(records of {}; this version writes {} fields); refusing to "
+                                  "resume into it",
+                                  line.substr(same_spec.size()), RunRecord::kFields));
+  }
   if (line.rfind(kHeaderStart, 0) == 0) {
     throw Error(path,
                 "the journal belongs to a different sweep (another scenario, grid, repeats or "

@@ -3,7 +3,9 @@
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/variation.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
@@ -35,6 +37,25 @@ void record_analysis(const AnalysisResult& a, RunRecord& r) {
   r.stick_slip = a.verdict.stick_slip;
   if (a.zero_one.run) r.zero_one_K = a.zero_one.K;
   if (a.prediction.computed) r.prediction_ratio = a.prediction.ratio();
+}
+
+void add_reason(RunRecord& r, const std::string& why) {
+  r.reason = r.reason.empty() ? why : r.reason + "; " + why;
+}
+
+// The model's own exponent of the run's (varied) scenario, over the rest of its stroke. A
+// stroke end before the measurement is over is expected with moving volumes; a run that
+// cannot be measured keeps NaN and says why (the record's verdict still stands).
+void record_model_exponent(const SweepSpec& spec, const SweepRun& run, RunRecord& r) {
+  const ModelLyapunovOptions o = spec.model_exponent.options(run.scenario.run.duration_s);
+  const ModelLyapunovResult m = plant_lyapunov(Plant(run.scenario), run.scenario.run, o);
+  if (!m.ok) {
+    add_reason(r, "model exponent: " + m.message);
+    return;
+  }
+  r.lambda_model = m.lambda_per_s;
+  r.lambda_model_uncertainty = m.uncertainty_per_s;
+  r.lambda_model_span_s = m.measured_s;
 }
 
 }  // namespace
@@ -74,6 +95,7 @@ RunRecord judge_run(const SweepSpec& spec, const SweepRun& run) {
   } catch (const Error& e) {
     r.reason = e.what();  // e.g. a record too short to judge: undetermined, not failed
   }
+  if (spec.model_exponent.enabled) record_model_exponent(spec, run, r);
   return r;
 }
 

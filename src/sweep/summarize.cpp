@@ -9,9 +9,8 @@ namespace pneumachaos {
 const std::vector<std::string>& sweep_regime_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
-    for (Regime r : {Regime::kSteady, Regime::kPeriodic, Regime::kQuasiPeriodic,
-                     Regime::kStickSlip, Regime::kChaotic, Regime::kStochastic,
-                     Regime::kUndetermined}) {
+    for (Regime r : {Regime::kSteady, Regime::kPeriodic, Regime::kQuasiPeriodic, Regime::kStickSlip,
+                     Regime::kChaotic, Regime::kStochastic, Regime::kUndetermined}) {
       n.emplace_back(regime_name(r));
     }
     return n;
@@ -19,12 +18,43 @@ const std::vector<std::string>& sweep_regime_names() {
   return names;
 }
 
+namespace {
+
+// Exponent beyond 3 standard errors: the model's own evidence of chaos over the run.
+bool model_chaotic(const RunRecord& r) {
+  return std::isfinite(r.lambda_model) && std::isfinite(r.lambda_model_uncertainty) &&
+         r.lambda_model > 3.0 * r.lambda_model_uncertainty;
+}
+
+// Mean, its standard error and the 3-sigma incidence of the model's exponent at one point.
+void summarize_model_exponent(const std::vector<const RunRecord*>& runs, PointSummary& ps) {
+  double sum = 0.0, var = 0.0, chaotic = 0.0;
+  std::size_t n = 0, ok = 0;
+  for (const RunRecord* r : runs) {
+    if (!r->ok) continue;
+    ++ok;
+    chaotic += model_chaotic(*r) ? 1.0 : 0.0;
+    if (!std::isfinite(r->lambda_model)) continue;
+    sum += r->lambda_model;
+    var += r->lambda_model_uncertainty * r->lambda_model_uncertainty;
+    ++n;
+  }
+  if (ok > 0) ps.model_chaos_incidence = chaotic / static_cast<double>(ok);
+  if (n == 0) return;
+  ps.mean_lambda_model = sum / static_cast<double>(n);
+  ps.lambda_model_uncertainty = std::sqrt(var) / static_cast<double>(n);
+}
+
+}  // namespace
+
 SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records) {
   SweepSummary s;
   s.points = spec.points();
   s.runs = records.size();
   s.per_point.resize(s.points);
   std::vector<std::size_t> lambda_count(s.points, 0);
+  std::vector<std::vector<const RunRecord*>> by_point(s.points);
+  for (const RunRecord& r : records) by_point.at(r.point).push_back(&r);
   for (std::size_t p = 0; p < s.points; ++p) {
     PointSummary& ps = s.per_point[p];
     ps.point = p;
@@ -68,6 +98,10 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
     if (ok > 0 && ps.stick_slip_incidence >= 0.5) ++s.stick_slip_points;
     if (ok > 0 && ps.chaos_incidence >= 1.0) ++s.chaos_full_points;
     if (ok > 0 && ps.chaos_incidence > 0.0) ++s.chaos_any_points;
+    if (!spec.model_exponent.enabled) continue;
+    summarize_model_exponent(by_point[ps.point], ps);
+    if (ps.model_chaos_incidence >= 1.0) ++s.model_chaos_full_points;
+    if (ps.model_chaos_incidence > 0.0) ++s.model_chaos_any_points;
   }
   return s;
 }

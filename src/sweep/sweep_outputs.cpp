@@ -25,14 +25,17 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
     AtomicFile f(dir + "/points.csv");
     f.stream() << "point," << axes_header
                << "runs,failed,stick_slip_incidence,chaos_incidence,mean_v_m_per_s,"
-                  "mean_lambda_per_s";
+                  "mean_lambda_per_s,lambda_model_per_s,lambda_model_uncertainty_per_s,"
+                  "model_chaos_incidence";
     for (const auto& name : sweep_regime_names()) f.stream() << ",incidence_" << name;
     f.stream() << '\n';
     for (const PointSummary& p : summary.per_point) {
       f.stream() << p.point << ',';
       for (double c : p.coordinates) f.stream() << fmt::format("{},", c);
-      f.stream() << fmt::format("{},{},{},{},{},{}", p.runs, p.failed, p.stick_slip_incidence,
-                                p.chaos_incidence, p.mean_v, p.mean_lambda);
+      f.stream() << fmt::format("{},{},{},{},{},{},{},{},{}", p.runs, p.failed,
+                                p.stick_slip_incidence, p.chaos_incidence, p.mean_v, p.mean_lambda,
+                                p.mean_lambda_model, p.lambda_model_uncertainty,
+                                p.model_chaos_incidence);
       for (double share : p.regime_incidence) f.stream() << fmt::format(",{}", share);
       f.stream() << '\n';
     }
@@ -42,7 +45,14 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
   j["spec"] = {{"fingerprint", spec.fingerprint()},
                {"repeats", spec.repeats},
                {"seed", spec.seed},
-               {"wolf", spec.wolf}};
+               {"wolf", spec.wolf},
+               {"model_exponent", spec.model_exponent.enabled}};
+  if (spec.model_exponent.enabled) {
+    const ModelExponentSpec& m = spec.model_exponent;
+    j["spec"]["model_exponent_settings"] = {{"transient_s", m.transient_s},
+                                            {"measure_s", m.measure_s},
+                                            {"renormalize_s", m.renormalize_s}};
+  }
   for (const auto& a : spec.axes) j["spec"]["grid"][a.key] = a.values;
   j["runs"] = summary.runs;
   j["failed_runs"] = summary.failed;
@@ -52,6 +62,12 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                   {"chaos_full_points", summary.chaos_full_points},
                   {"chaos_full_rule", "chaotic in every successful run (the paper's black)"},
                   {"chaos_any_points", summary.chaos_any_points}};
+  if (spec.model_exponent.enabled) {
+    j["regions"]["model_chaos_full_points"] = summary.model_chaos_full_points;
+    j["regions"]["model_chaos_any_points"] = summary.model_chaos_any_points;
+    j["regions"]["model_chaos_rule"] =
+        "the model's exponent positive beyond 3 standard errors over the measured span";
+  }
   AtomicFile f(dir + "/summary.json");
   f.stream() << j.dump(2) << '\n';
   f.commit();

@@ -1,10 +1,46 @@
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
+
+ModelLyapunovOptions ModelExponentSpec::options(double duration_s) const {
+  ModelLyapunovOptions o;
+  o.transient_s = transient_s;
+  o.measure_s = measure_s > 0.0 ? measure_s : duration_s - transient_s;
+  o.renormalize_s = renormalize_s;
+  o.until_terminal_event = true;  // volumes following the piston: the rest of the stroke
+  return o;
+}
+
+void ModelExponentSpec::validate(double duration_s) const {
+  if (!enabled) return;
+  if (!(std::isfinite(transient_s) && transient_s >= 0.0 && transient_s < duration_s)) {
+    throw Error(
+        "--model-transient",
+        fmt::format("{} s: must be >= 0 and shorter than the run ({} s)", transient_s, duration_s));
+  }
+  if (!(std::isfinite(measure_s) && measure_s >= 0.0)) {
+    throw Error("--model-measure",
+                fmt::format("{} s: must be a number >= 0 (0: the rest of the run)", measure_s));
+  }
+  if (!(std::isfinite(renormalize_s) && renormalize_s > 0.0)) {
+    throw Error("--model-renormalize",
+                fmt::format("{} s: must be a positive number", renormalize_s));
+  }
+  const ModelLyapunovOptions o = options(duration_s);
+  // The uncertainty is the spread between blocks: each needs at least one renormalisation.
+  if (o.measure_s < o.renormalize_s * static_cast<double>(o.blocks)) {
+    throw Error(measure_s > 0.0 ? "--model-measure" : "--model-transient",
+                fmt::format("{} s of measurement hold fewer than {} renormalisations of {} s",
+                            o.measure_s, o.blocks, o.renormalize_s));
+  }
+  o.validate();
+}
 
 void SweepSpec::validate() const {
   validate_grid(axes);
@@ -12,6 +48,7 @@ void SweepSpec::validate() const {
   if (runs() > 10'000'000)
     throw Error("grid", fmt::format("{} runs is more than 10 million", runs()));
   base.validate();
+  model_exponent.validate(base.run.duration_s);
 }
 
 std::string SweepSpec::fingerprint() const {
@@ -24,6 +61,9 @@ std::string SweepSpec::fingerprint() const {
     text += "\n";
   }
   text += fmt::format("repeats={} seed={} wolf={}\n", repeats, seed, wolf);
+  const ModelExponentSpec& m = model_exponent;
+  text += fmt::format("model_exponent={} transient={} measure={} renormalize={}\n", m.enabled,
+                      m.transient_s, m.measure_s, m.renormalize_s);
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (unsigned char c : text) {
     h ^= c;

@@ -31,6 +31,10 @@ struct ModelLyapunovOptions {
   double max_step_s = 2e-3;
   StepperKind stepper = StepperKind::kDopri5;
   std::size_t blocks = 10;  ///< for the uncertainty (standard error between blocks)
+  /// A terminal event (the piston at its stroke end) during the measurement ends it there
+  /// instead of failing it: the exponent and its blocks then span the time measured. A run
+  /// with moving volumes has no fixed length, so a sweep measures "the rest of the stroke".
+  bool until_terminal_event = false;
   void validate() const;
 };
 
@@ -42,6 +46,7 @@ struct ModelLyapunovResult {
   std::vector<double> running_time_s, running_per_s;  ///< convergence of the estimate
   std::size_t renormalizations = 0;
   std::size_t postponed = 0;  ///< intervals that ended with the two in different modes
+  double measured_s = 0.0;    ///< time the exponent spans (less than asked after a stroke end)
 };
 
 /// Starts from (x0, mode0) at t = 0.

@@ -10,9 +10,23 @@
 
 #include "pneumachaos/model/parameter_grid.hpp"
 #include "pneumachaos/model/scenario.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos {
+
+/// The model's own finite-time exponent per run (plant_lyapunov, docs/virtual_rig.md): after
+/// the start-up transient, over the rest of the run (to its stroke end or its duration).
+struct ModelExponentSpec {
+  bool enabled = false;
+  double transient_s = 1.0;  ///< discarded first (the start-up from rest)
+  double measure_s = 0.0;    ///< at most this long; 0: the rest of the run
+  double renormalize_s = 0.02;
+  /// Checks the settings against a run of `duration_s`, naming the sweep's flags.
+  void validate(double duration_s) const;
+  /// The options of plant_lyapunov for a run of `duration_s`.
+  [[nodiscard]] ModelLyapunovOptions options(double duration_s) const;
+};
 
 struct SweepSpec {
   Scenario base;
@@ -20,6 +34,7 @@ struct SweepSpec {
   std::size_t repeats = 5;
   std::uint64_t seed = 1;
   bool wolf = false;  ///< also run Wolf's estimator per run (slower; the verdict does not use it)
+  ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
   void validate() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
   [[nodiscard]] std::size_t runs() const { return points() * repeats; }
@@ -45,11 +60,14 @@ struct RunRecord {
   bool chaotic = false, stick_slip = false;
   double zero_one_K = kNaN;        ///< the 0-1 test's median K (NaN: not run)
   double prediction_ratio = kNaN;  ///< local-constant / linear prediction error
+  /// The model's own exponent and its standard error (NaN: not asked for, or not measurable;
+  /// `reason` then says why) and the time it spans.
+  double lambda_model = kNaN, lambda_model_uncertainty = kNaN, lambda_model_span_s = kNaN;
 
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
   /// Fields of an encoded record; part of the journal's header, so a journal written in
   /// another record format is refused as such.
-  static constexpr std::size_t kFields = 21;
+  static constexpr std::size_t kFields = 24;
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
   static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
   static std::string csv_header();
@@ -83,6 +101,11 @@ struct PointSummary {
   /// Fraction of the successful runs with each regime, in the order of sweep_regime_names().
   std::vector<double> regime_incidence;
   double mean_v = kNaN, mean_lambda = kNaN;
+  /// The model's exponent (--model-exponent): the mean over the runs that measured it, the
+  /// standard error of that mean from the runs' own uncertainties, and the fraction of the
+  /// successful runs whose exponent is positive beyond 3 of its standard errors.
+  double mean_lambda_model = kNaN, lambda_model_uncertainty = kNaN;
+  double model_chaos_incidence = kNaN;
 };
 
 /// Every regime name a run can carry (columns of points.csv).
@@ -93,6 +116,8 @@ struct SweepSummary {
   std::size_t stick_slip_points = 0;  ///< points with stick-slip in at least half of the runs
   std::size_t chaos_full_points = 0;  ///< points chaotic in every run (the paper's black)
   std::size_t chaos_any_points = 0;   ///< points chaotic in at least one run
+  /// With the model's exponent: points where it is beyond 3 sigma in every / in some run.
+  std::size_t model_chaos_full_points = 0, model_chaos_any_points = 0;
   std::vector<PointSummary> per_point;
   bool wrote_files = true;  ///< false on the MPI ranks other than 0
 };
