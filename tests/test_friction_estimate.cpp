@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "pneumachaos/identify/friction_estimate.hpp"
@@ -62,6 +64,7 @@ Scenario rig(FrictionKind kind, double S2_mm2) {
   s.friction.stribeck_velocity_m_per_s = 0.01;
   s.friction.stribeck_exponent = 2.0;
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
+  s.cylinder.frozen_position_m = 0.42;  // as docs/variants/simple_rig.toml
   return s;
 }
 
@@ -130,4 +133,47 @@ TEST(FrictionEstimate, StickIntervalsAndForceOfAKnownRecord) {
   EXPECT_NEAR(e.F_N[600], 25.0, 1e-6);
   ASSERT_EQ(e.excursions.size(), 1u);
   EXPECT_TRUE(e.excursions[0].from_stick);
+}
+
+namespace {
+
+struct Case {
+  const char* name;
+  FrictionKind kind;
+  double S2_mm2;
+  double duration_s;
+};
+
+void print_fit(const Recovered& r) {
+  std::printf("  sticks %zu, sliding %zu, window %zu, v noise %.3g mm/s\n", r.estimate.sticks.size(),
+              r.estimate.sliding_count(), 2 * r.estimate.sg_half_width + 1,
+              r.estimate.velocity_noise_m_per_s * 1e3);
+  for (const auto& f : r.fits.fits) {
+    std::printf("  %s rms %.3g:", f.name.c_str(), f.rms_N);
+    for (const auto& p : f.params) std::printf(" %s=%.4g+-%.2g", p.name.c_str(), p.value, p.stderr_value);
+    std::printf("%s\n", f.fitted ? "" : f.skipped.c_str());
+  }
+}
+
+}  // namespace
+
+TEST(FrictionValidation, Explore) {
+  for (Case c : {Case{"stribeck stick-slip", FrictionKind::kStribeck, 0.2, 6.0},
+                 Case{"stribeck sliding", FrictionKind::kStribeck, 0.35, 6.0},
+                 Case{"classic stick-slip", FrictionKind::kClassic, 0.2, 6.0},
+                 Case{"classic sliding", FrictionKind::kClassic, 0.35, 6.0}}) {
+    const Scenario s = rig(c.kind, c.S2_mm2);
+    const auto r = recover(s, degraded_record(s, c.duration_s, Degradation{}),
+                           {c.kind == FrictionKind::kClassic ? FrictionFitModel::kClassic
+                                                             : FrictionFitModel::kStribeck});
+    std::printf("%s\n", c.name);
+    print_fit(r);
+    if (std::getenv("DUMP")) {
+      FILE* f = std::fopen((std::string("/tmp/dump_") + c.name[0] + std::to_string(int(c.S2_mm2 * 100)) + ".csv").c_str(), "w");
+      const auto& e = r.estimate;
+      for (std::size_t i = 0; i < e.t_s.size(); ++i)
+        std::fprintf(f, "%g,%g,%g,%g,%d,%d\n", e.t_s[i], e.v_m_per_s[i], e.a_m_per_s2[i], e.F_N[i], e.stuck[i], e.sliding[i]);
+      std::fclose(f);
+    }
+  }
 }

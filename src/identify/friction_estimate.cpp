@@ -31,6 +31,37 @@ std::vector<double> moving_mean(const std::vector<double>& y, std::size_t h) {
   return out;
 }
 
+// Slope at sample i of the least-squares quadratic through samples lo..hi (one-sided
+// Savitzky-Golay near a stick boundary); a line for three points or fewer, 0 for one.
+double local_quadratic_slope(const std::vector<double>& y, std::size_t lo, std::size_t hi,
+                             std::size_t i, double dt) {
+  const std::size_t m = hi - lo + 1;
+  if (m < 2) return 0.0;
+  double S[5] = {0, 0, 0, 0, 0}, T[3] = {0, 0, 0};
+  for (std::size_t k = lo; k <= hi; ++k) {
+    const double x = double(k) - double(i);
+    double p = 1.0;
+    for (int q = 0; q < 5; ++q) {
+      if (q < 3) T[q] += p * y[k];
+      S[q] += p;
+      p *= x;
+    }
+  }
+  if (m <= 3) {  // a line
+    const double den = S[0] * S[2] - S[1] * S[1];
+    return den != 0.0 ? (S[0] * T[1] - S[1] * T[0]) / den / dt : 0.0;
+  }
+  // Normal equations [S0 S1 S2; S1 S2 S3; S2 S3 S4] c = T; the slope is c1 (Cramer).
+  const auto det3 = [](double a, double b, double c, double d, double e, double f, double g,
+                       double h, double k) {
+    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+  };
+  const double D = det3(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4]);
+  if (D == 0.0) return 0.0;
+  const double D1 = det3(S[0], T[0], S[2], S[1], T[1], S[3], S[2], T[2], S[4]);
+  return D1 / D / dt;
+}
+
 int sign_of(double v) { return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0); }
 
 // Point B of one excursion: where the accelerating branch (begin..peak) and the decelerating
@@ -159,49 +190,11 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
       std::max(4.0 * e.velocity_noise_m_per_s, 0.5e-3));
   const double thr = e.stick_threshold_m_per_s;
 
-  // Acceleration: given, or the Savitzky-Golay derivative with the noise/bias window.
-  if (r.a_m_per_s2) {
-    e.a_m_per_s2 = *r.a_m_per_s2;
-    e.acceleration_given = true;
-  } else {
-    std::size_t h = 0;
-    if (s.sg_half_width) {
-      h = std::max<std::size_t>(1, *s.sg_half_width);
-    } else {
-      // y''' from a wide fixed window (three nested 25-sample-half-width derivatives), its
-      // median magnitude over the moving samples as the typical value.
-      const auto a_wide = savitzky_golay_derivative(r.v_m_per_s, dt, 25);
-      const auto j_wide = savitzky_golay_derivative(a_wide, dt, 25);
-      const auto v3 = savitzky_golay_derivative(j_wide, dt, 25);
-      std::vector<double> mags;
-      for (std::size_t i = 0; i < n; ++i)
-        if (std::abs(e.v_smooth_m_per_s[i]) > thr) mags.push_back(std::abs(v3[i]));
-      h = choose_sg_half_width(e.velocity_noise_m_per_s, median(mags), dt);
-    }
-    h = std::min(h, (n - 1) / 2);
-    e.sg_half_width = h;
-    e.a_m_per_s2 = savitzky_golay_derivative(r.v_m_per_s, dt, h);
-  }
-
-  e.F_N.resize(n);
-  e.gauge_sum_Pa.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double g1 = r.p1_Pa[i] - s.ambient_Pa, g2 = r.p2_Pa[i] - s.ambient_Pa;
-    e.gauge_sum_Pa[i] = g1 + g2;
-    e.F_N[i] = s.area_head_m2 * g1 - s.area_rod_m2 * g2 - s.external_force_N -
-               s.mass_kg * e.a_m_per_s2[i];
-  }
-  const auto F_smooth = moving_mean(e.F_N, 5);
-  {
-    std::vector<double> dev(n);
-    for (std::size_t i = 0; i < n; ++i) dev[i] = std::abs(e.F_N[i] - F_smooth[i]);
-    e.force_noise_N = 1.4826 * median(dev) * std::sqrt(11.0 / 10.0);
-  }
-
   // Stick intervals: |v| (5-point mean) below the threshold for at least min_stick_s.
   e.stuck.assign(n, 0);
   e.sliding.assign(n, 0);
   const auto min_len = static_cast<std::size_t>(std::max(2.0, std::ceil(s.min_stick_s / dt)));
+  std::vector<std::pair<std::size_t, std::size_t>> rests;
   for (std::size_t i = 0; i < n;) {
     if (std::abs(e.v_smooth_m_per_s[i]) >= thr) {
       ++i;
@@ -210,26 +203,138 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
     std::size_t j = i;
     while (j < n && std::abs(e.v_smooth_m_per_s[j]) < thr) ++j;
     if (j - i >= min_len) {
-      StickInterval st;
-      st.begin = i;
-      st.end = j;
-      st.t_begin_s = r.t_s[i];
-      st.t_end_s = r.t_s[j - 1];
-      if (j < n) {
-        st.direction = sign_of(e.v_smooth_m_per_s[j]);
-        std::vector<double> last(e.F_N.begin() + static_cast<std::ptrdiff_t>(j - std::min<std::size_t>(5, j - i)),
-                                 e.F_N.begin() + static_cast<std::ptrdiff_t>(j));
-        st.breakaway_N = median(last);
-      } else {
-        st.breakaway_N = std::numeric_limits<double>::quiet_NaN();
-      }
-      e.sticks.push_back(st);
-      for (std::size_t k = i; k < j; ++k) e.stuck[k] = 1;
+      // The smoothed velocity leaves the band a sample or two before the raw one does: the
+      // stick extends over the raw samples still at rest, so that the breakaway and the stop
+      // (kinks of v) fall between a stuck and a moving sample.
+      std::size_t b = i, end = j;
+      while (end < n && std::abs(e.v_m_per_s[end]) < thr) ++end;
+      const std::size_t floor = rests.empty() ? 0 : rests.back().second;
+      while (b > floor && std::abs(e.v_m_per_s[b - 1]) < thr) --b;
+      rests.emplace_back(b, end);
+      for (std::size_t k = b; k < end; ++k) e.stuck[k] = 1;
+      j = std::max(j, end);
     }
     i = j;
   }
+  // Acceleration: given, or the Savitzky-Golay derivative with the noise/bias window.
+  if (r.a_m_per_s2) {
+    e.a_m_per_s2 = *r.a_m_per_s2;
+    e.acceleration_given = true;
+  } else {
+    const std::size_t h_max = std::max<std::size_t>(1, std::min<std::size_t>(100, (n - 1) / 2));
+    std::vector<std::size_t> widths(n, 0);
+    if (s.sg_half_width) {
+      std::fill(widths.begin(), widths.end(), std::min(h_max, std::max<std::size_t>(1, *s.sg_half_width)));
+    } else {
+      // The window is chosen per sample (docs/friction.md): the third derivative from a wide
+      // fixed window (three nested derivatives of half-width 25), its largest magnitude within
+      // 50 samples either side as the local bias scale, so that transients (breakaways,
+      // stops) get a short window and smooth sliding a long one.
+      const auto a_wide = savitzky_golay_derivative(r.v_m_per_s, dt, 25);
+      const auto j_wide = savitzky_golay_derivative(a_wide, dt, 25);
+      const auto v3 = savitzky_golay_derivative(j_wide, dt, 25);
+      constexpr std::size_t kReach = 50;
+      std::vector<double> local(n, 0.0);
+      // Sliding maximum of |v'''| over +-kReach (monotone queue).
+      std::vector<std::size_t> dq;
+      std::size_t head = 0;
+      for (std::size_t i = 0, next = 0; i < n; ++i) {
+        for (; next < n && next <= i + kReach; ++next) {
+          while (dq.size() > head && std::abs(v3[dq.back()]) <= std::abs(v3[next])) dq.pop_back();
+          dq.push_back(next);
+        }
+        while (dq[head] + kReach < i) ++head;
+        local[i] = std::abs(v3[dq[head]]);
+      }
+      for (std::size_t i = 0; i < n; ++i)
+        widths[i] = std::min(h_max, choose_sg_half_width(e.velocity_noise_m_per_s, local[i], dt));
+    }
+    // Each sample's window stays on its side of a stick boundary: the acceleration jumps at a
+    // breakaway and at a stop, and a window across the jump would smear it (one-sided local
+    // quadratic fits there). Inside a stick the piston is at rest: a = 0.
+    e.a_m_per_s2.assign(n, 0.0);
+    std::size_t run_begin = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (e.stuck[i]) {
+        run_begin = i + 1;
+        continue;
+      }
+      std::size_t run_end = i;  // last sample of this moving run
+      while (run_end + 1 < n && !e.stuck[run_end + 1]) ++run_end;
+      const std::size_t h = widths[i];
+      const std::size_t lo = std::max(run_begin, i >= h ? i - h : 0);
+      const std::size_t hi = std::min(run_end, i + h);
+      if (lo + h == i && i + h == hi) {
+        double acc = 0.0;
+        for (std::size_t k = 1; k <= h; ++k) acc += double(k) * (r.v_m_per_s[i + k] - r.v_m_per_s[i - k]);
+        const double wd = double(h);
+        e.a_m_per_s2[i] = 3.0 * acc / (wd * (wd + 1.0) * (2.0 * wd + 1.0) * dt);
+      } else {
+        e.a_m_per_s2[i] = local_quadratic_slope(r.v_m_per_s, lo, hi, i, dt);
+      }
+    }
+    std::vector<double> wd(widths.begin(), widths.end());
+    e.sg_half_width = static_cast<std::size_t>(median(wd));
+    e.sg_half_width_min = *std::min_element(widths.begin(), widths.end());
+    e.sg_half_width_max = *std::max_element(widths.begin(), widths.end());
+    e.sg_half_widths = std::move(widths);
+  }
+
+  e.F_N.resize(n);
+  e.drive_N.resize(n);
+  e.gauge_sum_Pa.resize(n);
+  e.mass_kg = s.mass_kg;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double g1 = r.p1_Pa[i] - s.ambient_Pa, g2 = r.p2_Pa[i] - s.ambient_Pa;
+    e.gauge_sum_Pa[i] = g1 + g2;
+    e.drive_N[i] = s.area_head_m2 * g1 - s.area_rod_m2 * g2 - s.external_force_N;
+    e.F_N[i] = e.drive_N[i] - s.mass_kg * e.a_m_per_s2[i];
+  }
+  const auto F_smooth = moving_mean(e.F_N, 5);
+  {
+    std::vector<double> dev(n);
+    for (std::size_t i = 0; i < n; ++i) dev[i] = std::abs(e.F_N[i] - F_smooth[i]);
+    e.force_noise_N = 1.4826 * median(dev) * std::sqrt(11.0 / 10.0);
+  }
+
+  for (const auto& [i, j] : rests) {
+    StickInterval st;
+    st.begin = i;
+    st.end = j;
+    st.t_begin_s = r.t_s[i];
+    st.t_end_s = r.t_s[j - 1];
+    if (j < n) {
+      st.direction = sign_of(e.v_smooth_m_per_s[j]);
+      // The drive at the stick's last sample, from a line through its last 10 samples (the
+      // force is still rising there; a line averages the noise without lagging).
+      const std::size_t m = std::min<std::size_t>(10, j - i);
+      double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+      for (std::size_t k = j - m; k < j; ++k) {
+        const double x = double(k) - double(j - 1);
+        sx += x;
+        sy += e.F_N[k];
+        sxx += x * x;
+        sxy += x * e.F_N[k];
+      }
+      const double md = double(m), den = md * sxx - sx * sx;
+      const double slope = den > 0.0 ? (md * sxy - sx * sy) / den : 0.0;
+      st.breakaway_N = (sy - slope * sx) / md;  // the line's value at x = 0 (sample j - 1)
+    } else {
+      st.breakaway_N = std::numeric_limits<double>::quiet_NaN();
+    }
+    e.sticks.push_back(st);
+  }
   for (std::size_t i = 0; i < n; ++i)
-    e.sliding[i] = !e.stuck[i] && std::abs(e.v_smooth_m_per_s[i]) > thr;
+    e.sliding[i] = !e.stuck[i] && std::abs(e.v_smooth_m_per_s[i]) > thr &&
+                   e.v_m_per_s[i] * sign_of(e.v_smooth_m_per_s[i]) > thr;
+  // A stop is abrupt (the velocity drops to rest within a sample or two): the differentiator's
+  // window straddling it smears an impulsive deceleration over its width, so the samples
+  // within a half-width (+2) before a stick are not used for the curve or the fits.
+  for (const StickInterval& st : e.sticks) {
+    const std::size_t guard =
+        (e.acceleration_given || st.begin == 0 ? 0 : e.sg_half_widths[st.begin - 1]) + 2;
+    for (std::size_t k = st.begin > guard ? st.begin - guard : 0; k < st.begin; ++k) e.sliding[k] = 0;
+  }
 
   // The binned steady curve, per direction, from the threshold to the largest speed.
   for (int dir : {-1, 1}) {

@@ -62,46 +62,102 @@ FrictionParams to_friction(FrictionKind kind, const double* q) {
   return f;
 }
 
-// A point of the comparison set: a sliding sample, or a breakaway (v = 0+ in `dir`).
-struct Point {
-  double v = 0.0, gauge = 0.0, F = 0.0;
+// The comparison set (docs/friction.md, "Fits"): the equation of motion integrated over
+// blocks of kBlock sample intervals inside sliding runs, m (v_end - v_begin) / T =
+// mean(drive) - mean(F), so that the fitted force needs no differentiated velocity (whose
+// bias at breakaways and stops would bias vs and B); plus one point per breakaway.
+constexpr std::size_t kBlock = 5;
+
+struct Sample {
+  double v = 0.0, gauge = 0.0, w = 0.0;  // w: trapezoid weight / sum of the block's weights
   int dir = 0;
-  bool breakaway = false;
+};
+struct Block {
+  std::size_t first = 0, count = 0;  // into FitData::samples
+  std::size_t begin = 0;             // record sample of the block's start
+  double target_N = 0.0;             // mean friction over the block from the motion
+};
+struct Breakaway {
+  double gauge = 0.0, F = 0.0;
+  int dir = 0;
+};
+struct FitData {
+  std::vector<Sample> samples;
+  std::vector<Block> blocks;
+  std::vector<Breakaway> breakaways;
+  [[nodiscard]] std::size_t size() const { return blocks.size() + breakaways.size(); }
 };
 
-std::vector<Point> comparison_points(const FrictionEstimate& e) {
-  std::vector<Point> pts;
-  for (std::size_t i = 0; i < e.F_N.size(); ++i) {
-    if (!e.sliding[i]) continue;
-    const int dir = e.v_smooth_m_per_s[i] > 0.0 ? 1 : -1;
-    if (dir * e.v_m_per_s[i] <= 0.0) continue;  // noise across zero: no direction to fit
-    pts.push_back({e.v_m_per_s[i], e.gauge_sum_Pa[i], e.F_N[i], dir, false});
+FitData fit_data(const FrictionEstimate& e) {
+  FitData d;
+  const std::size_t n = e.F_N.size();
+  const double dt = n > 1 ? e.t_s[1] - e.t_s[0] : 1e-3;
+  for (std::size_t i = 0; i < n;) {
+    if (!e.sliding[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    const int dir = e.v_m_per_s[i] > 0.0 ? 1 : -1;
+    while (j < n && e.sliding[j] && (e.v_m_per_s[j] > 0.0 ? 1 : -1) == dir) ++j;
+    // Blocks of kBlock intervals over samples i .. j-1 (a shorter last block if >= 2).
+    for (std::size_t b = i; b + 1 < j; b += kBlock) {
+      const std::size_t last = std::min(b + kBlock, j - 1);
+      Block blk;
+      blk.first = d.samples.size();
+      blk.count = last - b + 1;
+      blk.begin = b;
+      const double intervals = double(last - b);
+      double drive = 0.0;
+      for (std::size_t k = b; k <= last; ++k) {
+        const double w = (k == b || k == last ? 0.5 : 1.0) / intervals;
+        drive += w * e.drive_N[k];
+        d.samples.push_back({e.v_m_per_s[k], e.gauge_sum_Pa[k], w, dir});
+      }
+      blk.target_N = drive - e.mass_kg * (e.v_m_per_s[last] - e.v_m_per_s[b]) / (intervals * dt);
+      d.blocks.push_back(blk);
+    }
+    i = j;
   }
   for (const StickInterval& s : e.sticks) {
     if (s.direction == 0 || !std::isfinite(s.breakaway_N)) continue;
-    pts.push_back({0.0, e.gauge_sum_Pa[s.end - 1], s.breakaway_N, s.direction, true});
+    d.breakaways.push_back({e.gauge_sum_Pa[s.end - 1], s.breakaway_N, s.direction});
   }
-  return pts;
+  return d;
 }
 
 template <typename T, typename P>
-T static_prediction(const P& p, const Point& pt) {
+T sliding_force(const P& p, const Sample& s) {
   BasicFrictionInput<T> in;
-  in.v_m_per_s = T(pt.v);
-  in.gauge_sum_Pa = T(pt.gauge);
+  in.v_m_per_s = T(s.v);
+  in.gauge_sum_Pa = T(s.gauge);
   in.position_m = T(0.0);
-  if (pt.breakaway) return double(pt.dir) * friction_law::static_N(p, in);
-  return friction_law::stiction_sliding_N(p, in, pt.dir);
+  return friction_law::stiction_sliding_N(p, in, s.dir);
+}
+
+template <typename T, typename P>
+T breakaway_force(const P& p, const Breakaway& b) {
+  BasicFrictionInput<T> in;
+  in.v_m_per_s = T(0.0);
+  in.gauge_sum_Pa = T(b.gauge);
+  in.position_m = T(0.0);
+  return double(b.dir) * friction_law::static_N(p, in);
 }
 
 struct StaticResidual {
-  const std::vector<Point>* points;
+  const FitData* data;
   FrictionKind kind;
   template <typename T>
   bool operator()(const T* const q, T* residual) const {
     const FitParams<T> p = params_of(kind, q);
-    for (std::size_t i = 0; i < points->size(); ++i)
-      residual[i] = static_prediction<T>(p, (*points)[i]) - (*points)[i].F;
+    std::size_t r = 0;
+    for (const Block& b : data->blocks) {
+      T mean(0.0);
+      for (std::size_t k = b.first; k < b.first + b.count; ++k)
+        mean += data->samples[k].w * sliding_force<T>(p, data->samples[k]);
+      residual[r++] = mean - b.target_N;
+    }
+    for (const Breakaway& b : data->breakaways) residual[r++] = breakaway_force<T>(p, b) - b.F;
     return true;
   }
 };
@@ -109,9 +165,11 @@ struct StaticResidual {
 // LuGre along the measured velocity: q = ln sigma0, ln sigma1, the levels fixed. While
 // stuck, the bristles hold the measured force (z = F / sigma0, within the static level);
 // elsewhere z follows dz/dt = v - sigma0 |v| z / g(v), stepped exactly for v held over a
-// sample. Residuals on the samples outside sticks.
+// sample. Residuals on the comparison set's blocks and breakaways, as the static models'.
 struct LuGreResidual {
   const FrictionEstimate* e;
+  const FitData* data;
+  std::vector<std::size_t> block_samples;  // record index of each of data->samples
   FrictionParams levels;
   template <typename T>
   bool operator()(const T* const q, T* residual) const {
@@ -128,10 +186,11 @@ struct LuGreResidual {
     p.static_gain_N_per_Pa = T(levels.static_gain_N_per_Pa);
     p.sigma0_N_per_m = exp(q[0]);
     p.sigma1_Ns_per_m = exp(q[1]);
-    const double dt = e->t_s.size() > 1 ? e->t_s[1] - e->t_s[0] : 1e-3;
+    const std::size_t n = e->F_N.size();
+    const double dt = n > 1 ? e->t_s[1] - e->t_s[0] : 1e-3;
+    std::vector<T> force(n, T(0.0));
     T z(0.0);
-    std::size_t r = 0;
-    for (std::size_t i = 0; i < e->F_N.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
       BasicFrictionInput<T> in;
       in.v_m_per_s = T(e->v_m_per_s[i]);
       in.gauge_sum_Pa = T(e->gauge_sum_Pa[i]);
@@ -141,34 +200,29 @@ struct LuGreResidual {
         z = T(e->F_N[i]) / p.sigma0_N_per_m;
         if (z > zmax) z = zmax;
         if (z < -zmax) z = -zmax;
+        force[i] = p.sigma0_N_per_m * z;
         continue;
       }
       T dz;
-      residual[r++] = friction_law::lugre_N(p, in, z, dz) - e->F_N[i];
+      force[i] = friction_law::lugre_N(p, in, z, dz);
       const T g = friction_law::stribeck_level_N(p, in, in.v_m_per_s);
       const double v = e->v_m_per_s[i];
       const T zss = (v >= 0.0 ? g : -g) / p.sigma0_N_per_m;
       z = zss + (z - zss) * exp(-p.sigma0_N_per_m * std::abs(v) * dt / g);
     }
-    return true;
-  }
-  // The force it predicts at each sample (stuck samples: the held force), in double.
-  std::vector<double> prediction(const double* q) const {
-    std::vector<double> out(e->F_N.size(), 0.0);
-    std::vector<double> res(e->F_N.size());
-    (*this)(q, res.data());
     std::size_t r = 0;
-    const double s0 = std::exp(q[0]);
-    for (std::size_t i = 0; i < out.size(); ++i) {
-      if (e->stuck[i]) {
-        const double smax = levels.static_N + levels.static_gain_N_per_Pa * e->gauge_sum_Pa[i];
-        out[i] = std::clamp(e->F_N[i], -smax, smax);
-        (void)s0;
-      } else {
-        out[i] = res[r++] + e->F_N[i];
-      }
+    for (const Block& b : data->blocks) {
+      T mean(0.0);
+      for (std::size_t k = b.first; k < b.first + b.count; ++k)
+        mean += data->samples[k].w * force[block_samples[k]];
+      residual[r++] = mean - b.target_N;
     }
-    return out;
+    std::size_t s = 0;
+    for (const StickInterval& st : e->sticks) {
+      if (st.direction == 0 || !std::isfinite(st.breakaway_N)) continue;
+      residual[r++] = force[st.end - 1] - data->breakaways[s++].F;
+    }
+    return true;
   }
 };
 
@@ -214,39 +268,51 @@ std::vector<double> linear_lsq(const std::vector<std::vector<double>>& rows,
   return x;
 }
 
-// Starting values: classic by linear least squares; Stribeck by a grid over vs with the
-// levels and B linear at each vs.
-std::array<double, kQ> start_values(const std::vector<Point>& pts, bool stribeck, double delta) {
+// Starting values: classic by linear least squares on the blocks; Stribeck by a grid over vs
+// with the levels and B linear at each vs.
+std::array<double, kQ> start_values(const FitData& d, bool stribeck, double delta) {
   std::array<double, kQ> q{};
   q[kDelta] = delta;
   q[kVs] = 10.0;
   double break_sum = 0.0;
-  std::size_t breaks = 0;
+  for (const Breakaway& b : d.breakaways) break_sum += b.dir * b.F;
   std::vector<std::vector<double>> rows;
   std::vector<double> y;
-  for (const Point& p : pts) {
-    if (p.breakaway) {
-      break_sum += p.dir * p.F;
-      ++breaks;
-      continue;
+  for (const Block& b : d.blocks) {
+    double dir = 0.0, v = 0.0;
+    for (std::size_t k = b.first; k < b.first + b.count; ++k) {
+      dir += d.samples[k].w * d.samples[k].dir;
+      v += d.samples[k].w * d.samples[k].v;
     }
-    rows.push_back({1.0, std::abs(p.v)});
-    y.push_back(p.dir * p.F);
+    rows.push_back({dir, v});
+    y.push_back(b.target_N);
   }
   const auto c = linear_lsq(rows, y, nullptr);
   q[kFc] = std::max(0.0, c.size() > 0 ? c[0] : 0.0);
   q[kB] = std::max(0.0, c.size() > 1 ? c[1] : 0.0);
-  q[kFs] = breaks ? std::max(q[kFc], break_sum / double(breaks)) : q[kFc];
+  q[kFs] = d.breakaways.empty() ? q[kFc]
+                                : std::max(q[kFc], break_sum / double(d.breakaways.size()));
   if (!stribeck) return q;
   double best = std::numeric_limits<double>::infinity();
   for (int g = 0; g <= 60; ++g) {
     const double vs_mm = 0.1 * std::pow(10.0, g / 15.0);  // 0.1 mm/s .. 1 m/s
     std::vector<std::vector<double>> sr;
     std::vector<double> sy;
-    for (const Point& p : pts) {
-      const double w = p.breakaway ? 1.0 : std::exp(-std::pow(std::abs(p.v) / (vs_mm * 1e-3), delta));
-      sr.push_back({1.0 - w, w, p.breakaway ? 0.0 : std::abs(p.v)});
-      sy.push_back(p.dir * p.F);
+    for (const Block& b : d.blocks) {
+      double c0 = 0.0, c1 = 0.0, c2 = 0.0;
+      for (std::size_t k = b.first; k < b.first + b.count; ++k) {
+        const Sample& s = d.samples[k];
+        const double w = std::exp(-std::pow(std::abs(s.v) / (vs_mm * 1e-3), delta));
+        c0 += s.w * s.dir * (1.0 - w);
+        c1 += s.w * s.dir * w;
+        c2 += s.w * s.v;
+      }
+      sr.push_back({c0, c1, c2});
+      sy.push_back(b.target_N);
+    }
+    for (const Breakaway& b : d.breakaways) {
+      sr.push_back({0.0, double(b.dir), 0.0});
+      sy.push_back(b.F);
     }
     double rss = 0.0;
     const auto x = linear_lsq(sr, sy, &rss);
@@ -313,14 +379,13 @@ void score(ModelFit& f, const std::vector<double>& residuals) {
   f.aic = ll + 2.0 * k;
 }
 
-std::vector<double> static_residuals(const std::vector<Point>& pts, FrictionKind kind,
-                                     const double* q) {
+std::vector<double> static_residuals(const FitData& pts, FrictionKind kind, const double* q) {
   std::vector<double> r(pts.size());
   StaticResidual{&pts, kind}(q, r.data());
   return r;
 }
 
-ModelFit fit_static(FrictionFitModel model, const std::vector<Point>& pts, std::size_t sliding,
+ModelFit fit_static(FrictionFitModel model, const FitData& pts, std::size_t sliding,
                     bool breakaways, const FrictionFitOptions& o) {
   ModelFit f;
   f.model = model;
@@ -341,15 +406,16 @@ ModelFit fit_static(FrictionFitModel model, const std::vector<Point>& pts, std::
   if (fs_fixed) constant.push_back(kFs);
   f.free_params = kQ - constant.size();
   const std::size_t needed = 10 * f.free_params;
-  if (sliding < needed) {
+  if (sliding < needed || pts.blocks.size() < 2 * f.free_params) {
     f.skipped = fmt::format("too few sliding samples to fit: {} (at least {} needed for {} "
                             "parameters)", sliding, needed, f.free_params);
     return f;
   }
   std::array<double, kQ> q = start_values(pts, stribeck, o.fixed_exponent);
   if (free_delta) {
-    // The shortcut for delta = 2 in stribeck_weight carries no derivative in delta: start off it.
-    if (q[kDelta] == 2.0) q[kDelta] = 1.9;
+    // The shortcuts for delta = 0.5, 1, 2 in stribeck_weight carry no derivative in delta:
+    // start off them (the optimum lands on one exactly with probability zero).
+    if (q[kDelta] == 2.0 || q[kDelta] == 1.0 || q[kDelta] == 0.5) q[kDelta] *= 1.05;
   }
   ceres::Problem problem;
   auto* cost = new ceres::AutoDiffCostFunction<StaticResidual, ceres::DYNAMIC, kQ>(
@@ -390,14 +456,14 @@ ModelFit fit_static(FrictionFitModel model, const std::vector<Point>& pts, std::
   return f;
 }
 
-ModelFit fit_lugre(const FrictionEstimate& e, const std::vector<Point>& pts, std::size_t sliding,
+ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t sliding,
                    const ModelFit* stribeck, const FrictionFitOptions& o) {
   ModelFit f;
   f.model = FrictionFitModel::kLuGre;
   f.name = fit_model_name(f.model);
   f.free_params = 2 + (stribeck ? stribeck->free_params : 0);
   const std::size_t needed = 10 * f.free_params;
-  if (sliding < needed) {
+  if (sliding < needed || data.blocks.size() < 2 * f.free_params) {
     f.skipped = fmt::format("too few sliding samples to fit: {} (at least {} needed for {} "
                             "parameters)", sliding, needed, f.free_params);
     return f;
@@ -406,16 +472,17 @@ ModelFit fit_lugre(const FrictionEstimate& e, const std::vector<Point>& pts, std
   levels.kind = FrictionKind::kLuGre;
   levels.texture.clear();
   levels.memory = FrictionMemory::kNone;
-  std::size_t moving = 0;
-  for (char s : e.stuck) moving += s ? 0 : 1;
-  std::array<double, 2> q{std::log(std::max(1.0, o.start.sigma0_N_per_m)),
-                          std::log(std::max(1e-3, o.start.sigma1_Ns_per_m))};
+  std::vector<std::size_t> index;
+  for (const Block& b : data.blocks)
+    for (std::size_t k = 0; k < b.count; ++k) index.push_back(b.begin + k);
+  std::array<double, 2> q{std::log(std::clamp(o.start.sigma0_N_per_m, 1e3, 1e8)),
+                          std::log(std::clamp(o.start.sigma1_Ns_per_m, 1e-2, 1e5))};
   ceres::Problem problem;
-  auto* functor = new LuGreResidual{&e, levels};
+  auto* functor = new LuGreResidual{&e, &data, index, levels};
   const LuGreResidual copy = *functor;
-  problem.AddResidualBlock(
-      new ceres::AutoDiffCostFunction<LuGreResidual, ceres::DYNAMIC, 2>(functor, static_cast<int>(moving)),
-      nullptr, q.data());
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LuGreResidual, ceres::DYNAMIC, 2>(
+                               functor, static_cast<int>(data.size())),
+                           nullptr, q.data());
   problem.SetParameterLowerBound(q.data(), 0, std::log(1e2));
   problem.SetParameterUpperBound(q.data(), 0, std::log(1e9));
   problem.SetParameterLowerBound(q.data(), 1, std::log(1e-3));
@@ -425,25 +492,11 @@ ModelFit fit_lugre(const FrictionEstimate& e, const std::vector<Point>& pts, std
   f.fitted = true;
   f.converged = converged(summary);
   f.summary = termination(summary);
-  // The comparison set: the sliding samples and breakaways, as for the static models.
-  const auto pred = copy.prediction(q.data());
-  std::vector<double> res;
-  for (std::size_t i = 0; i < e.F_N.size(); ++i)
-    if (e.sliding[i] && (e.v_smooth_m_per_s[i] > 0.0 ? 1.0 : -1.0) * e.v_m_per_s[i] > 0.0)
-      res.push_back(pred[i] - e.F_N[i]);
-  for (const StickInterval& s : e.sticks)
-    if (s.direction != 0 && std::isfinite(s.breakaway_N))
-      res.push_back(pred[s.end - 1] - s.breakaway_N);
-  (void)pts;
+  std::vector<double> res(data.size());
+  copy(q.data(), res.data());
   score(f, res);
-  double rss_moving = 0.0;
-  {
-    std::vector<double> r(moving);
-    copy(q.data(), r.data());
-    for (double x : r) rss_moving += x * x;
-  }
-  const auto se = standard_errors(problem, q.data(), 2,
-                                  rss_moving / std::max(1.0, double(moving) - 2.0));
+  const double dof = std::max(1.0, double(data.size()) - 2.0);
+  const auto se = standard_errors(problem, q.data(), 2, f.rms_N * f.rms_N * double(data.size()) / dof);
   levels.sigma0_N_per_m = std::exp(q[0]);
   levels.sigma1_Ns_per_m = std::exp(q[1]);
   f.friction = levels;
@@ -508,13 +561,9 @@ double steady_friction_N(const FrictionParams& p, double v, double gauge_sum_Pa)
 }
 
 FrictionFits fit_friction(const FrictionEstimate& e, const FrictionFitOptions& o) {
-  const std::vector<Point> pts = comparison_points(e);
-  std::size_t sliding = 0;
-  bool breakaways = false;
-  for (const Point& p : pts) {
-    if (p.breakaway) breakaways = true;
-    else ++sliding;
-  }
+  const FitData pts = fit_data(e);
+  const std::size_t sliding = e.sliding_count();
+  const bool breakaways = !pts.breakaways.empty();
   FrictionFits out;
   const auto wants = [&](FrictionFitModel m) {
     return std::find(o.models.begin(), o.models.end(), m) != o.models.end();

@@ -20,7 +20,8 @@ struct EstimateSettings {
   double mass_kg = 0.0;        ///< moving mass m
   double ambient_Pa = 101325.0;
   double external_force_N = 0.0;  ///< load.external_force_N, opposing extension
-  /// Savitzky-Golay half-width (samples); unset: chosen from the noise (docs/friction.md).
+  /// Savitzky-Golay half-width (samples) for every sample; unset: chosen per sample from the
+  /// noise and the local third derivative (docs/friction.md).
   std::optional<std::size_t> sg_half_width;
   /// |v| below this is "at rest" (m/s); unset: 4 x the velocity noise, at least 0.5 mm/s.
   std::optional<double> stick_threshold_m_per_s;
@@ -73,11 +74,15 @@ struct Excursion {
 
 struct FrictionEstimate {
   std::vector<double> t_s, v_m_per_s, a_m_per_s2, F_N, gauge_sum_Pa;
+  std::vector<double> drive_N;  ///< A1 (P1 - Pa) - A2 (P2 - Pa) - external force
+  double mass_kg = 0.0;
   std::vector<double> v_smooth_m_per_s;  ///< 5-point centred mean, for stick and direction tests
   std::vector<char> stuck;    ///< 1 inside a stick interval
   std::vector<char> sliding;  ///< 1 outside sticks with |v| above the threshold: the fits' samples
   bool acceleration_given = false;
-  std::size_t sg_half_width = 0;  ///< window = 2 h + 1 samples
+  std::size_t sg_half_width = 0;  ///< median half-width h (window = 2 h + 1 samples)
+  std::size_t sg_half_width_min = 0, sg_half_width_max = 0;
+  std::vector<std::size_t> sg_half_widths;  ///< per sample (empty when a is given)
   double velocity_noise_m_per_s = 0.0;
   double stick_threshold_m_per_s = 0.0;
   double force_noise_N = 0.0;  ///< sd of F(t) against its smoothed value
