@@ -26,6 +26,7 @@ Action add_friction(CLI::App& app) {
     identify::RecordColumns columns;
     bool pressure_dependent = false;
     std::optional<int> window;
+    int max_iterations = 100;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -52,6 +53,10 @@ Action add_friction(CLI::App& app) {
                 "fit Fc and Fs growing with P1+P2-2Pa (Fc_gain_N_per_MPa, Fs_gain_N_per_MPa)");
   cmd->add_option("--window", args->window,
                   "Savitzky-Golay window in samples (odd, >= 3; default: chosen from the noise)");
+  cmd->add_option("--max-iterations", args->max_iterations,
+                  "iterations allowed to each fit (default 100); a fit that has not converged "
+                  "by then fails the command (exit 3)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--column-v", args->columns.v, "header name of the velocity column (default v)");
   cmd->add_option("--column-P1", args->columns.P1, "header name of chamber 1's pressure (default P1)");
   cmd->add_option("--column-P2", args->columns.P2, "header name of chamber 2's pressure (default P2)");
@@ -69,6 +74,7 @@ Action add_friction(CLI::App& app) {
       }
     }
     fit.pressure_dependent = args->pressure_dependent;
+    fit.max_iterations = args->max_iterations;
     fit.fixed_exponent = scenario.friction.stribeck_exponent;
     fit.start = scenario.friction;
     identify::EstimateSettings settings = identify::estimate_settings_from(scenario);

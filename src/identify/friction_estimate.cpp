@@ -305,12 +305,17 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
     st.t_end_s = r.t_s[j - 1];
     if (j < n) {
       st.direction = sign_of(e.v_smooth_m_per_s[j]);
-      // The drive at the stick's last sample, from a line through its last 10 samples (the
-      // force is still rising there; a line averages the noise without lagging).
-      const std::size_t m = std::min<std::size_t>(10, j - i);
+      // The breakaway instant: the last sample of the stick whose smoothed velocity is still
+      // within the velocity noise (a slow Stribeck breakaway creeps through the stick band
+      // for a few samples while the drive keeps rising). The force there from a line through
+      // the 10 samples up to it (the force is rising; a line averages the noise without lag).
+      const double dir = double(st.direction);
+      std::size_t last = j - 1;
+      while (last > i && dir * e.v_m_per_s[last] > 2.0 * e.velocity_noise_m_per_s) --last;
+      const std::size_t m = std::min<std::size_t>(10, last + 1 - i);
       double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-      for (std::size_t k = j - m; k < j; ++k) {
-        const double x = double(k) - double(j - 1);
+      for (std::size_t k = last + 1 - m; k <= last; ++k) {
+        const double x = double(k) - double(last);
         sx += x;
         sy += e.F_N[k];
         sxx += x * x;
@@ -318,7 +323,7 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
       }
       const double md = double(m), den = md * sxx - sx * sx;
       const double slope = den > 0.0 ? (md * sxy - sx * sy) / den : 0.0;
-      st.breakaway_N = (sy - slope * sx) / md;  // the line's value at x = 0 (sample j - 1)
+      st.breakaway_N = (sy - slope * sx) / md;  // the line's value at x = 0 (sample `last`)
     } else {
       st.breakaway_N = std::numeric_limits<double>::quiet_NaN();
     }
