@@ -296,3 +296,26 @@ TEST(FrictionValidation, PressureDependentFit) {
               f.param("Fc_gain_N_per_MPa")->stderr_value, f.param("Fs_N")->value,
               f.param("Fs_gain_N_per_MPa")->value, f.param("Fs_gain_N_per_MPa")->stderr_value);
 }
+
+TEST(FrictionValidation, LuGreSealRecord) {
+  // The virtual rig's LuGre seal (Fc 19.7 N, Fs 47 N, vs 45 mm/s, delta 1, sigma0 1e5 N/m,
+  // sigma1 26 N s/m, sigma2 26 N s/m) on one rigid mass, 6 s, degraded: the static laws
+  // cannot follow the bristles through the reversals, LuGre can and is preferred.
+  Scenario s = default_scenario();
+  s.load.coupling = LoadCoupling::kRigid;
+  const auto r = recover(s, degraded_record(s, 6.0, Degradation{}), all_fit_models());
+  const ModelFit* lugre = nullptr;
+  for (const auto& f : r.fits.fits)
+    if (f.name == "lugre") lugre = &f;
+  ASSERT_NE(lugre, nullptr);
+  ASSERT_TRUE(lugre->converged) << lugre->summary;
+  EXPECT_EQ(r.fits.preferred_model, "lugre");
+  std::printf("lugre:");
+  for (const auto& p : lugre->params) std::printf(" %s=%.4g+-%.2g", p.name.c_str(), p.value, p.stderr_value);
+  std::printf(" rms %.3g\n", lugre->rms_N);
+  EXPECT_LT(rel(lugre->param("Fc_N")->value, s.friction.coulomb_N), 0.05);
+  EXPECT_LT(rel(lugre->param("Fs_N")->value, s.friction.static_N), 0.05);
+  EXPECT_LT(rel(lugre->param("B_Ns_per_m")->value, s.friction.viscous_Ns_per_m), 0.10);
+  EXPECT_LT(rel(lugre->param("vs_mm_per_s")->value * 1e-3, s.friction.stribeck_velocity_m_per_s), 0.30);
+  EXPECT_LT(rel(lugre->param("sigma0_N_per_m")->value, s.friction.sigma0_N_per_m), 0.30);
+}

@@ -162,11 +162,13 @@ struct StaticResidual {
   }
 };
 
-// LuGre along the measured velocity: q = ln sigma0, ln sigma1, the levels fixed. While
+// LuGre along the measured velocity: q = ln sigma0, ln sigma1, Fc, Fs, vs [mm/s], B (delta and
+// the pressure gains held at the Stribeck fit's). While
 // stuck, the bristles hold the measured force (z = F / sigma0, within the static level);
 // elsewhere z follows dz/dt = v - sigma0 |v| z / g(v), stepped exactly for v held over a
 // sample. Residuals on the comparison set's blocks and breakaways, as the static models'.
 struct LuGreResidual {
+  static constexpr int kSub = 4;
   const FrictionEstimate* e;
   const FitData* data;
   std::vector<std::size_t> block_samples;  // record index of each of data->samples
@@ -177,11 +179,11 @@ struct LuGreResidual {
     using std::exp;
     FitParams<T> p;
     p.kind = FrictionKind::kLuGre;
-    p.coulomb_N = T(levels.coulomb_N);
-    p.static_N = T(levels.static_N);
-    p.stribeck_velocity_m_per_s = T(levels.stribeck_velocity_m_per_s);
+    p.coulomb_N = q[2];
+    p.static_N = q[3];
+    p.stribeck_velocity_m_per_s = q[4] * 1e-3;
     p.stribeck_exponent = T(levels.stribeck_exponent);
-    p.viscous_Ns_per_m = T(levels.viscous_Ns_per_m);
+    p.viscous_Ns_per_m = q[5];
     p.coulomb_gain_N_per_Pa = T(levels.coulomb_gain_N_per_Pa);
     p.static_gain_N_per_Pa = T(levels.static_gain_N_per_Pa);
     p.sigma0_N_per_m = exp(q[0]);
@@ -205,10 +207,18 @@ struct LuGreResidual {
       }
       T dz;
       force[i] = friction_law::lugre_N(p, in, z, dz);
-      const T g = friction_law::stribeck_level_N(p, in, in.v_m_per_s);
-      const double v = e->v_m_per_s[i];
-      const T zss = (v >= 0.0 ? g : -g) / p.sigma0_N_per_m;
-      z = zss + (z - zss) * exp(-p.sigma0_N_per_m * std::abs(v) * dt / g);
+      // To the next sample in kSub steps, v linear between the samples, each step exact
+      // for v held at its midpoint (the bristles' time constant g / (sigma0 |v|) can be
+      // shorter than a sample).
+      const double v0 = e->v_m_per_s[i], v1 = i + 1 < n ? e->v_m_per_s[i + 1] : v0;
+      for (int k = 0; k < kSub; ++k) {
+        const double v = v0 + (v1 - v0) * (k + 0.5) / kSub;
+        BasicFrictionInput<T> mid = in;
+        mid.v_m_per_s = T(v);
+        const T g = friction_law::stribeck_level_N(p, mid, mid.v_m_per_s);
+        const T zss = (v >= 0.0 ? g : -g) / p.sigma0_N_per_m;
+        z = zss + (z - zss) * exp(-p.sigma0_N_per_m * std::abs(v) * (dt / kSub) / g);
+      }
     }
     std::size_t r = 0;
     for (const Block& b : data->blocks) {
@@ -461,32 +471,42 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
   ModelFit f;
   f.model = FrictionFitModel::kLuGre;
   f.name = fit_model_name(f.model);
-  f.free_params = 2 + (stribeck ? stribeck->free_params : 0);
+  f.free_params = 6;
   const std::size_t needed = 10 * f.free_params;
   if (sliding < needed || data.blocks.size() < 2 * f.free_params) {
     f.skipped = fmt::format("too few sliding samples to fit: {} (at least {} needed for {} "
                             "parameters)", sliding, needed, f.free_params);
     return f;
   }
+  // Start from the Stribeck fit's levels (or the scenario's), all refitted with sigma0, sigma1.
   FrictionParams levels = stribeck ? stribeck->friction : o.start;
+  if (!stribeck) levels.stribeck_exponent = o.fixed_exponent;
   levels.kind = FrictionKind::kLuGre;
   levels.texture.clear();
   levels.memory = FrictionMemory::kNone;
   std::vector<std::size_t> index;
   for (const Block& b : data.blocks)
     for (std::size_t k = 0; k < b.count; ++k) index.push_back(b.begin + k);
-  std::array<double, 2> q{std::log(std::clamp(o.start.sigma0_N_per_m, 1e3, 1e8)),
-                          std::log(std::clamp(o.start.sigma1_Ns_per_m, 1e-2, 1e5))};
+  std::array<double, 6> q{std::log(std::clamp(o.start.sigma0_N_per_m, 1e3, 1e8)),
+                          std::log(std::clamp(o.start.sigma1_Ns_per_m, 1e-2, 1e5)),
+                          levels.coulomb_N,
+                          std::max(levels.static_N, levels.coulomb_N),
+                          std::max(0.02, levels.stribeck_velocity_m_per_s * 1e3),
+                          levels.viscous_Ns_per_m};
   ceres::Problem problem;
   auto* functor = new LuGreResidual{&e, &data, index, levels};
   const LuGreResidual copy = *functor;
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LuGreResidual, ceres::DYNAMIC, 2>(
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LuGreResidual, ceres::DYNAMIC, 6>(
                                functor, static_cast<int>(data.size())),
                            nullptr, q.data());
   problem.SetParameterLowerBound(q.data(), 0, std::log(1e2));
   problem.SetParameterUpperBound(q.data(), 0, std::log(1e9));
   problem.SetParameterLowerBound(q.data(), 1, std::log(1e-3));
   problem.SetParameterUpperBound(q.data(), 1, std::log(1e6));
+  for (int i : {2, 3, 5}) problem.SetParameterLowerBound(q.data(), i, 0.0);
+  problem.SetParameterLowerBound(q.data(), 2, 1e-3);  // g(v) > 0 divides
+  problem.SetParameterLowerBound(q.data(), 4, 0.01);
+  problem.SetParameterUpperBound(q.data(), 4, 1e4);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options(o.max_iterations), &problem, &summary);
   f.fitted = true;
@@ -495,17 +515,23 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
   std::vector<double> res(data.size());
   copy(q.data(), res.data());
   score(f, res);
-  const double dof = std::max(1.0, double(data.size()) - 2.0);
-  const auto se = standard_errors(problem, q.data(), 2, f.rms_N * f.rms_N * double(data.size()) / dof);
+  const double dof = std::max(1.0, double(data.size()) - double(f.free_params));
+  const auto se = standard_errors(problem, q.data(), 6, f.rms_N * f.rms_N * double(data.size()) / dof);
   levels.sigma0_N_per_m = std::exp(q[0]);
   levels.sigma1_Ns_per_m = std::exp(q[1]);
+  levels.coulomb_N = q[2];
+  levels.static_N = q[3];
+  levels.stribeck_velocity_m_per_s = q[4] * 1e-3;
+  levels.viscous_Ns_per_m = q[5];
   f.friction = levels;
-  if (stribeck) {
-    for (const auto& p : stribeck->params) {
-      FittedParameter c = p;
-      c.fixed = true;  // from the Stribeck fit
-      f.params.push_back(c);
-    }
+  f.params.push_back({"Fc_N", q[2], se[2], "N", false});
+  f.params.push_back({"Fs_N", q[3], se[3], "N", false});
+  f.params.push_back({"vs_mm_per_s", q[4], se[4], "mm/s", false});
+  f.params.push_back({"stribeck_exponent", levels.stribeck_exponent, 0.0, "-", true});
+  f.params.push_back({"B_Ns_per_m", q[5], se[5], "N*s/m", false});
+  if (o.pressure_dependent) {
+    f.params.push_back({"Fc_gain_N_per_MPa", levels.coulomb_gain_N_per_Pa * 1e6, 0.0, "N/MPa", true});
+    f.params.push_back({"Fs_gain_N_per_MPa", levels.static_gain_N_per_Pa * 1e6, 0.0, "N/MPa", true});
   }
   f.params.push_back({"sigma0_N_per_m", levels.sigma0_N_per_m, levels.sigma0_N_per_m * se[0], "N/m", false});
   f.params.push_back({"sigma1_Ns_per_m", levels.sigma1_Ns_per_m, levels.sigma1_Ns_per_m * se[1], "N*s/m", false});
