@@ -26,7 +26,7 @@ Action add_friction(CLI::App& app) {
     identify::RecordColumns columns;
     bool pressure_dependent = false;
     std::optional<int> window;
-    int max_iterations = 100;
+    int max_iterations = 200;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -54,7 +54,7 @@ Action add_friction(CLI::App& app) {
   cmd->add_option("--window", args->window,
                   "Savitzky-Golay window in samples (odd, >= 3; default: chosen from the noise)");
   cmd->add_option("--max-iterations", args->max_iterations,
-                  "iterations allowed to each fit (default 100); a fit that has not converged "
+                  "iterations allowed to each fit (default 200); a fit that has not converged "
                   "by then fails the command (exit 3)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--column-v", args->columns.v, "header name of the velocity column (default v)");

@@ -350,8 +350,8 @@ ceres::Solver::Options solver_options(int max_iterations) {
   ceres::Solver::Options o;
   o.linear_solver_type = ceres::DENSE_QR;
   o.max_num_iterations = max_iterations;
-  o.function_tolerance = 1e-10;
-  o.parameter_tolerance = 1e-10;
+  o.function_tolerance = 1e-9;
+  o.parameter_tolerance = 1e-9;
   o.gradient_tolerance = 1e-12;
   o.num_threads = 1;
   o.logging_type = ceres::SILENT;
@@ -435,8 +435,9 @@ ModelFit fit_static(FrictionFitModel model, const FitData& pts, std::size_t slid
   for (int i : {kFc, kFs, kB, kGc, kGs}) problem.SetParameterLowerBound(q.data(), i, 0.0);
   problem.SetParameterLowerBound(q.data(), kVs, 0.01);
   problem.SetParameterUpperBound(q.data(), kVs, 1e4);
-  problem.SetParameterLowerBound(q.data(), kDelta, 0.3);
-  problem.SetParameterUpperBound(q.data(), kDelta, 5.0);
+  // Bounds that always contain the start (the scenario's delta may lie outside 0.3..5).
+  problem.SetParameterLowerBound(q.data(), kDelta, std::min(0.3, q[kDelta]));
+  problem.SetParameterUpperBound(q.data(), kDelta, std::max(5.0, q[kDelta]));
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options(o.max_iterations), &problem, &summary);
   f.fitted = true;
@@ -489,8 +490,8 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
     for (std::size_t k = 0; k < b.count; ++k) index.push_back(b.begin + k);
   std::array<double, 6> q{std::log(std::clamp(o.start.sigma0_N_per_m, 1e3, 1e8)),
                           std::log(std::clamp(o.start.sigma1_Ns_per_m, 1e-2, 1e5)),
-                          levels.coulomb_N,
-                          std::max(levels.static_N, levels.coulomb_N),
+                          std::max(1e-3, levels.coulomb_N),
+                          std::max({1e-3, levels.static_N, levels.coulomb_N}),
                           std::max(0.02, levels.stribeck_velocity_m_per_s * 1e3),
                           levels.viscous_Ns_per_m};
   ceres::Problem problem;
@@ -504,7 +505,8 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
   problem.SetParameterLowerBound(q.data(), 1, std::log(1e-3));
   problem.SetParameterUpperBound(q.data(), 1, std::log(1e6));
   for (int i : {2, 3, 5}) problem.SetParameterLowerBound(q.data(), i, 0.0);
-  problem.SetParameterLowerBound(q.data(), 2, 1e-3);  // g(v) > 0 divides
+  problem.SetParameterLowerBound(q.data(), 2, 1e-3);  // g(v) >= min(Fc, Fs) > 0 divides
+  problem.SetParameterLowerBound(q.data(), 3, 1e-3);
   problem.SetParameterLowerBound(q.data(), 4, 0.01);
   problem.SetParameterUpperBound(q.data(), 4, 1e4);
   ceres::Solver::Summary summary;

@@ -27,7 +27,7 @@ struct FrictionFitOptions {
   double fixed_exponent = 2.0;      ///< delta of "stribeck" (the scenario's, from the CLI)
   /// LuGre start (and the Stribeck levels when no Stribeck fit is available).
   FrictionParams start;
-  int max_iterations = 100;
+  int max_iterations = 200;
 };
 
 /// A parameter as the scenario names it (Fc_N, Fs_N, vs_mm_per_s, B_Ns_per_m, ...), in that
