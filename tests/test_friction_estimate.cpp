@@ -319,3 +319,28 @@ TEST(FrictionValidation, LuGreSealRecord) {
   EXPECT_LT(rel(lugre->param("vs_mm_per_s")->value * 1e-3, s.friction.stribeck_velocity_m_per_s), 0.30);
   EXPECT_LT(rel(lugre->param("sigma0_N_per_m")->value, s.friction.sigma0_N_per_m), 0.30);
 }
+
+TEST(FrictionEstimate, OfASimulatedRunForTheReport) {
+  // The report's Fig. 3 path: a simulated stick-slip run, its own seal friction, loops with
+  // A, C, D marked; and the equation of motion agrees with that friction while sliding.
+  const Scenario s = rig(FrictionKind::kStribeck, 0.2);
+  SimulationOptions o = SimulationOptions::from(s.run);
+  o.duration_s = 3.0;
+  const SimulationResult sim = simulate(Plant(s), o);
+  const FrictionEstimate exact = estimate_friction_of_run(sim.series, s);
+  const FrictionEstimate eom = estimate_friction_of_run(sim.series, s, false);
+  ASSERT_GE(exact.sticks.size(), 5u);
+  ASSERT_GE(exact.excursions.size(), 5u);
+  std::size_t marked = 0;
+  for (const auto& x : exact.excursions) marked += x.marks.size() >= 3 ? 1 : 0;
+  EXPECT_GE(marked, exact.excursions.size() / 2);
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < eom.F_N.size(); ++i)
+    if (eom.sliding[i]) {
+      sum += std::abs(eom.F_N[i] - exact.F_N[i]);
+      ++count;
+    }
+  ASSERT_GT(count, 100u);
+  EXPECT_LT(sum / double(count), 1.0);  // mean |error| of the differentiated estimate, N
+}

@@ -290,6 +290,12 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
     e.drive_N[i] = s.area_head_m2 * g1 - s.area_rod_m2 * g2 - s.external_force_N;
     e.F_N[i] = e.drive_N[i] - s.mass_kg * e.a_m_per_s2[i];
   }
+  if (s.force_N) {
+    if (s.force_N->size() != n)
+      throw Error(r.source, fmt::format("the given force has {} samples, the record {}",
+                                        s.force_N->size(), n));
+    e.F_N = *s.force_N;
+  }
   const auto F_smooth = moving_mean(e.F_N, 5);
   {
     std::vector<double> dev(n);
@@ -439,6 +445,18 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
     if (ex.to_stick) ex.marks.push_back({'D', ex.end - 1, e.v_m_per_s[ex.end - 1], F_smooth[ex.end - 1]});
   }
   return e;
+}
+
+FrictionEstimate estimate_friction_of_run(const TimeSeries& run, const Scenario& scenario,
+                                          bool model_force) {
+  std::vector<double> t(run.size());
+  for (std::size_t k = 0; k < run.size(); ++k) t[k] = run.time_s(k);
+  const MeasuredRecord r = record_from_columns(
+      std::move(t), run.channel("v").values, run.channel("P1").values, run.channel("P2").values,
+      run.has_channel("x") ? run.channel("x").values : std::vector<double>{}, "simulation");
+  EstimateSettings s = estimate_settings_from(scenario);
+  if (model_force && run.has_channel("F_friction")) s.force_N = run.channel("F_friction").values;
+  return estimate_friction(r, s);
 }
 
 MeasuredRecord record_from_columns(std::vector<double> t_s, std::vector<double> v_m_per_s,

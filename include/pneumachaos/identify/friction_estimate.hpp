@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/identify/measured_record.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
@@ -26,6 +27,9 @@ struct EstimateSettings {
   /// |v| below this is "at rest" (m/s); unset: 4 x the velocity noise, at least 0.5 mm/s.
   std::optional<double> stick_threshold_m_per_s;
   double min_stick_s = 0.010;  ///< a stick lasts at least this long
+  /// When given (one value per sample): F(t) itself, e.g. a simulation's own seal friction,
+  /// instead of the equation of motion; sticks, curve and loops are then computed on it.
+  std::optional<std::vector<double>> force_N;
   std::size_t curve_bins = 16;  ///< bins of the steady curve per direction of motion
 };
 
@@ -108,6 +112,13 @@ double noise_sd(const std::vector<double>& y);
 
 /// Throws Error naming the record when the settings are unusable (no areas, no mass).
 FrictionEstimate estimate_friction(const MeasuredRecord& record, const EstimateSettings& settings);
+
+/// A simulated run (channels t, v, P1, P2, x as `simulate` writes them) through the same
+/// estimate, for the report's Fig. 3: with `model_force` and an F_friction channel, F(t) is
+/// the simulation's own seal friction (exact, whatever the coupling); otherwise the equation
+/// of motion with the scenario's geometry and mass. Loops carry their A-D marks.
+FrictionEstimate estimate_friction_of_run(const TimeSeries& run, const Scenario& scenario,
+                                          bool model_force = true);
 
 /// For a simulated trajectory (e.g. the report's Fig. 3): a MeasuredRecord from the columns
 /// of a simulation (t, v, P1, P2, x), no noise added.
