@@ -114,12 +114,13 @@ TEST(MeasuredRecord, PressureOutOfRange) {
 TEST(MeasuredRecord, VelocityTooLargeForStroke) {
   RecordReadOptions o;
   o.stroke_m = 0.5;
-  // 20 mm/s written into a column labelled m/s: 20 m/s, 0.5 m gone in 25 ms.
+  // 5 mm/s written into a column labelled m/s: 5 m/s, past 1.5 strokes in 0.15 s.
   const std::string m = message_of(
       record("t[s],v[m/s],P1[Pa],P2[Pa]", 1000,
-             [](int, double t) { return fmt::format("{},20,300000,200000", t); }),
+             [](int, double t) { return fmt::format("{},5,300000,200000", t); }),
       {}, o);
   EXPECT_NE(m.find("rec.csv:"), std::string::npos) << m;
+  EXPECT_NE(m.find("stroke"), std::string::npos) << m;
   EXPECT_NE(m.find("mm/s"), std::string::npos) << m;
   // The same in mm/s is fine.
   EXPECT_NO_THROW(parse_measured_record(
@@ -156,4 +157,13 @@ TEST(MeasuredRecord, NaNAndWords) {
   EXPECT_NE(m.find("rec.csv:7"), std::string::npos) << m;
   m = message_of(record("t[s],v[m/s],P1[Pa],P2[Pa]", 20, si_row));
   EXPECT_NE(m.find("at least 100"), std::string::npos) << m;
+}
+
+TEST(MeasuredRecord, SpeedAboveAnyCylinder) {
+  // mm/s values in a column labelled m/s: refused even without a stroke to compare with.
+  const std::string m = message_of(record("t[s],v[m/s],P1[Pa],P2[Pa]", 200, [](int i, double t) {
+    return fmt::format("{},{},300000,200000", t, i == 150 ? 35.0 : 0.02);
+  }));
+  EXPECT_NE(m.find("rec.csv:152:2"), std::string::npos) << m;
+  EXPECT_NE(m.find("m/s vs mm/s"), std::string::npos) << m;
 }

@@ -85,7 +85,9 @@ Action add_friction(CLI::App& app) {
     }
     identify::RecordReadOptions read;
     read.ambient_Pa = scenario.ambient_pressure_Pa;
-    read.stroke_m = scenario.cylinder.stroke_m;
+    // Frozen chamber volumes (a virtual rig's long record) let a simulation travel beyond the
+    // stroke; a real record cannot.
+    if (!scenario.cylinder.volumes_frozen()) read.stroke_m = scenario.cylinder.stroke_m;
     const identify::MeasuredRecord record = identify::read_measured_record(args->file, args->columns, read);
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
     const identify::FrictionFits fits = identify::fit_friction(estimate, fit);

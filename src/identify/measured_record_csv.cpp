@@ -229,6 +229,10 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
       const auto i = static_cast<std::size_t>(c->index);
       const std::string where = fmt::format("{}:{}:{} ({})", origin, n, i + 1, header[i]);
       double value = parse_cell(trim(fields[i]), where) * c->unit.scale;
+      if (c->quantity == Quantity::kVelocity && std::abs(value) > options.max_speed_m_per_s)
+        throw Error(where, fmt::format("speed {} m/s is above {} m/s, faster than any pneumatic "
+                                       "cylinder: is the unit right (m/s vs mm/s)?",
+                                       std::abs(value), options.max_speed_m_per_s));
       if (c->quantity == Quantity::kPressure) {
         if (c->unit.gauge) value += options.ambient_Pa;
         if (value < 0.0)
@@ -285,7 +289,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
                                 header[static_cast<std::size_t>(v.index)]),
                     fmt::format("the velocity integrates to a travel of {:.3g} m by here, more "
                                 "than the stroke ({:.3g} m) allows: is the unit right (m/s vs "
-                                "mm/s)?",
+                                "mm/s)? (or set cylinder.stroke_mm)",
                                 hi - lo, *options.stroke_m));
     }
   }

@@ -34,6 +34,9 @@ struct RecordReadOptions {
   /// Cylinder stroke (m): when given, a velocity whose integral travels further than
   /// 1.5 strokes (plus 10 mm) is refused as being in the wrong unit.
   std::optional<double> stroke_m;
+  /// Speeds above this (m/s) are refused whatever the stroke: no pneumatic cylinder moves
+  /// at 10 m/s, a velocity in mm/s labelled m/s does.
+  double max_speed_m_per_s = 10.0;
 };
 
 /// Accepted units: time s, ms; velocity m/s, mm/s; pressure Pa, kPa, MPa, bar, psi, each
