@@ -169,6 +169,9 @@ struct StaticResidual {
 // sample. Residuals on the comparison set's blocks and breakaways, as the static models'.
 struct LuGreResidual {
   static constexpr int kSub = 4;
+  // A speed of exactly 0 (quantised records have them at reversals) makes pow(|v|/vs, delta)
+  // non-differentiable for delta < 1; a nanometre per second is zero for the force.
+  static double off_zero(double v) { return v != 0.0 ? v : 1e-9; }
   const FrictionEstimate* e;
   const FitData* data;
   std::vector<std::size_t> block_samples;  // record index of each of data->samples
@@ -194,7 +197,7 @@ struct LuGreResidual {
     T z(0.0);
     for (std::size_t i = 0; i < n; ++i) {
       BasicFrictionInput<T> in;
-      in.v_m_per_s = T(e->v_m_per_s[i]);
+      in.v_m_per_s = T(off_zero(e->v_m_per_s[i]));
       in.gauge_sum_Pa = T(e->gauge_sum_Pa[i]);
       in.position_m = T(0.0);
       if (e->stuck[i]) {
@@ -212,7 +215,7 @@ struct LuGreResidual {
       // shorter than a sample).
       const double v0 = e->v_m_per_s[i], v1 = i + 1 < n ? e->v_m_per_s[i + 1] : v0;
       for (int k = 0; k < kSub; ++k) {
-        const double v = v0 + (v1 - v0) * (k + 0.5) / kSub;
+        const double v = off_zero(v0 + (v1 - v0) * (k + 0.5) / kSub);
         BasicFrictionInput<T> mid = in;
         mid.v_m_per_s = T(v);
         const T g = friction_law::stribeck_level_N(p, mid, mid.v_m_per_s);
