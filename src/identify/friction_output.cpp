@@ -38,8 +38,10 @@ std::string friction_summary(const FrictionEstimate& e, const FrictionFits& fits
   if (e.acceleration_given)
     s += "acceleration     from the record's a column\n";
   else
-    s += fmt::format("acceleration     Savitzky-Golay derivative, window {} samples ({:g} ms)\n",
-                     2 * e.sg_half_width + 1, (2 * e.sg_half_width + 1) * dt * 1e3);
+    s += fmt::format("acceleration     Savitzky-Golay derivative, window {} samples ({:g} ms) median, "
+                     "{}-{} by the noise/bias rule\n",
+                     2 * e.sg_half_width + 1, (2 * e.sg_half_width + 1) * dt * 1e3,
+                     2 * e.sg_half_width_min + 1, 2 * e.sg_half_width_max + 1);
   s += fmt::format("velocity noise   {:.3g} mm/s; at rest below {:.3g} mm/s\n",
                    e.velocity_noise_m_per_s * 1e3, e.stick_threshold_m_per_s * 1e3);
   s += fmt::format("force noise      {:.3g} N\n", e.force_noise_N);
@@ -81,6 +83,8 @@ std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
                    {"external_force_N", st.external_force_N}};
   j["acceleration"] = {{"source", e.acceleration_given ? "column" : "savitzky-golay"},
                        {"window_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width + 1},
+                       {"window_min_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width_min + 1},
+                       {"window_max_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width_max + 1},
                        {"polynomial_order", 2}};
   j["velocity_noise_mm_per_s"] = number(e.velocity_noise_m_per_s * 1e3);
   j["stick_threshold_mm_per_s"] = number(e.stick_threshold_m_per_s * 1e3);
