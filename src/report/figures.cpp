@@ -59,19 +59,33 @@ FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
   return f;
 }
 
+// One gnuplot label per letter, offset from its point so the curve stays visible.
+std::string loop_letters(const std::vector<std::vector<LoopLabel>>& letters) {
+  std::string out;
+  for (std::size_t r = 0; r < letters.size(); ++r)
+    for (const LoopLabel& l : letters[r])
+      out += fmt::format("set label '{}' at {},{} point pt 7 ps 1.2 lc 'black' offset 0.6,0.6 "
+                         "font ',14'\n",
+                         l.label, 1e3 * l.v_m_per_s, l.F_N);
+  return out;
+}
+
 FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds,
-                                 const std::vector<std::array<double, 2>>& steady) {
+                                 const std::vector<std::array<double, 2>>& steady,
+                                 const std::vector<std::vector<LoopLabel>>& letters) {
   FigureSpec f;
   f.name = "fig3_friction_velocity";
   f.caption = fmt::format(
       "Fig. 3: seal friction force against piston velocity over the last {:g} s of each record: "
       "the loops the friction traces while the velocity oscillates (the paper's A-B-C-B-D-A), "
       "beside the seal's steady friction-velocity curve (black, dashed), whose falling part at "
-      "low speed is the negative slope B of the paper's Section 3.4.",
+      "low speed is the negative slope B of the paper's Section 3.4. Letters mark one loop of "
+      "each record as `pneumachaos friction` finds it (docs/friction.md): A breakaway (end of a "
+      "stick), C top speed, D stop, B where the accelerating and decelerating branches cross.",
       seconds);
   std::string plot =
       "set grid\nset xlabel 'piston velocity [mm/s]'\nset ylabel 'seal friction [N]'\n"
-      "set key top left\nplot ";
+      "set key top left\n" + loop_letters(letters) + "plot ";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const auto& s = records[i].series;
     const std::string file = fmt::format("fig3_record{}.dat", i + 1);

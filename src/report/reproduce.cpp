@@ -9,6 +9,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/figures.hpp"
@@ -147,6 +148,21 @@ void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vec
                                          a.theiler);
 }
 
+// The letters of Fig. 3 for one record: of the loops that start within its last `seconds`,
+// the one with the most marks (the latest among equals), as `pneumachaos friction` finds them.
+std::vector<LoopLabel> loop_letters(const TimeSeries& run, const Scenario& s, double seconds) {
+  const identify::FrictionEstimate e = identify::estimate_friction_of_run(run, s);
+  const auto n = run.size(), window = static_cast<std::size_t>(seconds * run.rate_Hz());
+  const identify::Excursion* best = nullptr;
+  for (const auto& x : e.excursions)
+    if (x.begin + window >= n && (best == nullptr || x.marks.size() >= best->marks.size()))
+      best = &x;
+  std::vector<LoopLabel> out;
+  if (best != nullptr)
+    for (const auto& m : best->marks) out.push_back({m.label, m.v_m_per_s, m.F_N});
+  return out;
+}
+
 // The conclusion's Fig. 5 and Fig. 6 changes at the example point, by the linear analysis.
 void add_damping_inputs(ClaimInputs& ci, const Scenario& base) {
   Scenario high_ps = base, heavy = base;
@@ -205,9 +221,13 @@ class ReportBuilder {
     stage_.stage("Fig. 3: friction-velocity loops");
     Scenario stick = base_;
     stick.circuit.S2_m2 = 0.05e-6;
+    const TimeSeries stick_run = run(stick, 5.0).series;
+    const double seconds = o_.quick ? 1.0 : 2.0;
     add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example_.series},
-                               {"stick-slip (S2 = 0.05 mm^2)", run(stick, 5.0).series}},
-                              o_.quick ? 1.0 : 2.0, steady_curve(Plant(base_), 0.2)));
+                               {"stick-slip (S2 = 0.05 mm^2)", stick_run}},
+                              seconds, steady_curve(Plant(base_), 0.2),
+                              {loop_letters(example_.series, base_, seconds),
+                               loop_letters(stick_run, stick, seconds)}));
   }
 
   void stability() {

@@ -21,12 +21,21 @@ struct LabelledRecord {
   TimeSeries series;
 };
 
+/// A lettered point of Fig. 3's loop (A breakaway, B branch crossing, C top speed, D stop).
+struct LoopLabel {
+  char label = 'A';
+  double v_m_per_s = 0.0;
+  double F_N = 0.0;
+};
+
 FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
                                  const std::vector<LabelledRecord>& meter_out);
 /// Seal friction against piston velocity over `seconds` of each record (Fig. 3's loops),
-/// with the seal's steady curve as (v [m/s], F [N]) pairs.
+/// with the seal's steady curve as (v [m/s], F [N]) pairs and, per record, the letters of one
+/// loop (empty: none found).
 FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, double seconds,
-                                 const std::vector<std::array<double, 2>>& steady);
+                                 const std::vector<std::array<double, 2>>& steady,
+                                 const std::vector<std::vector<LoopLabel>>& letters = {});
 FigureSpec stability_map_figure(const StabilityMap& map);
 /// Chaos incidence in grey (white 0 %, black 100 %) with the stick-slip region hatched.
 FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
