@@ -8,7 +8,10 @@ const FlagNames& common_flag_names() {
                                {"grid axis", "--grid"},
                                {"repeats", "--repeats"},
                                {"output directory", "--out"},
-                               {"sampling rate", "--rate"}};
+                               {"sampling rate", "--rate"},
+                               {"model exponent transient", "--model-transient"},
+                               {"model exponent measure", "--model-measure"},
+                               {"model exponent renormalize", "--model-renormalize"}};
   return names;
 }
 

@@ -21,21 +21,21 @@ void ModelExponentSpec::validate(double duration_s) const {
   if (!enabled) return;
   if (!(std::isfinite(transient_s) && transient_s >= 0.0 && transient_s < duration_s)) {
     throw Error(
-        "--model-transient",
+        "model exponent transient",
         fmt::format("{} s: must be >= 0 and shorter than the run ({} s)", transient_s, duration_s));
   }
   if (!(std::isfinite(measure_s) && measure_s >= 0.0)) {
-    throw Error("--model-measure",
+    throw Error("model exponent measure",
                 fmt::format("{} s: must be a number >= 0 (0: the rest of the run)", measure_s));
   }
   if (!(std::isfinite(renormalize_s) && renormalize_s > 0.0)) {
-    throw Error("--model-renormalize",
+    throw Error("model exponent renormalize",
                 fmt::format("{} s: must be a positive number", renormalize_s));
   }
   const ModelLyapunovOptions o = options(duration_s);
   // The uncertainty is the spread between blocks: each needs at least one renormalisation.
   if (o.measure_s < o.renormalize_s * static_cast<double>(o.blocks)) {
-    throw Error(measure_s > 0.0 ? "--model-measure" : "--model-transient",
+    throw Error(measure_s > 0.0 ? "--model-measure" : "model exponent transient",
                 fmt::format("{} s of measurement hold fewer than {} renormalisations of {} s",
                             o.measure_s, o.blocks, o.renormalize_s));
   }
