@@ -14,29 +14,10 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_fields.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 
 namespace pneumachaos::identify {
 namespace {
-
-std::string trim(std::string s) {
-  const auto not_space = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), not_space));
-  s.erase(std::find_if(s.rbegin(), s.rend(), not_space).base(), s.end());
-  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
-  return s;
-}
-
-std::string base_name(const std::string& header) {
-  const auto bracket = header.find('[');
-  return trim(bracket == std::string::npos ? header : header.substr(0, bracket));
-}
-
-std::string unit_of(const std::string& header) {
-  const auto open = header.find('[');
-  const auto close = header.rfind(']');
-  if (open == std::string::npos || close == std::string::npos || close < open) return "";
-  return trim(header.substr(open + 1, close - open - 1));
-}
 
 enum class Quantity { kTime, kVelocity, kPressure, kPosition, kAcceleration };
 
@@ -69,7 +50,7 @@ Unit parse_unit(const std::string& text, Quantity q, const std::string& where,
       const std::string m = marker;
       if (lower.size() > m.size() && lower.ends_with(m)) {
         unit.gauge = m.find('g') != std::string::npos;
-        u = trim(u.substr(0, u.size() - m.size()));
+        u = trim_field(u.substr(0, u.size() - m.size()));
         break;
       }
     }
@@ -78,7 +59,7 @@ Unit parse_unit(const std::string& text, Quantity q, const std::string& where,
       u = "psi";
     }
   }
-  u = trim(u);
+  u = trim_field(u);
   const auto is = [&](std::initializer_list<const char*> names) {
     return std::any_of(names.begin(), names.end(), [&](const char* n) { return u == n; });
   };
@@ -119,26 +100,6 @@ Unit parse_unit(const std::string& text, Quantity q, const std::string& where,
   return unit;
 }
 
-// The lines of a record, numbered as in the file; blank lines and '#' comments skipped.
-class LineSource {
- public:
-  explicit LineSource(const std::string& text) : in_(text) {}
-  bool next(std::string& line) {
-    while (std::getline(in_, line)) {
-      ++number_;
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      const std::string t = trim(line);
-      if (!t.empty() && t.front() != '#') return true;
-    }
-    return false;
-  }
-  [[nodiscard]] std::size_t number() const { return number_; }
-
- private:
-  std::istringstream in_;
-  std::size_t number_ = 0;
-};
-
 struct ColumnSpec {
   ColumnSpec(const char* r, Quantity q) : role(r), quantity(q) {}
   const char* role;  // t, v, P1, ...
@@ -148,34 +109,12 @@ struct ColumnSpec {
   std::vector<double> values;
 };
 
-int find_column(const std::vector<std::string>& names, const std::vector<std::string>& wanted) {
-  for (const auto& w : wanted) {
-    if (w.empty()) continue;
-    for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == w || base_name(names[i]) == w) return static_cast<int>(i);
-  }
-  return -1;
-}
-
-double parse_cell(const std::string& f, const std::string& where) {
-  double v = 0.0;
-  const char* end = f.data() + f.size();
-  const auto [ptr, ec] = std::from_chars(f.data(), end, v);
-  if (ec == std::errc::result_out_of_range && ptr == end)
-    throw Error(where, fmt::format("{} is outside the range of a double", f));
-  if (ec != std::errc() || ptr != end || f.empty())
-    throw Error(where, fmt::format("expected a number, got \"{}\"", f));
-  if (!std::isfinite(v)) throw Error(where, fmt::format("expected a finite number, got {}", f));
-  return v;
-}
-
 }  // namespace
 
 MeasuredRecord parse_measured_record(const std::string& text, const std::string& origin,
                                      const RecordColumns& names,
                                      const RecordReadOptions& options) {
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  LineSource lines(text.starts_with(kBom) ? text.substr(kBom.size()) : text);
+  CsvLines lines(text);
   std::string line;
   if (!lines.next(line)) throw Error(origin, "the file is empty: expected a header line");
   const std::size_t header_line = lines.number();
@@ -183,7 +122,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
   if (line.find(',') == std::string::npos)
     throw Error(header_where, "expected a comma-separated header such as t[s],v[m/s],P1[Pa],P2[Pa]");
   std::vector<std::string> header;
-  for (const auto& f : split_csv_fields(line)) header.push_back(trim(f));
+  for (const auto& f : split_csv_fields(line)) header.push_back(trim_field(f));
 
   ColumnSpec t{"t", Quantity::kTime}, v{"v", Quantity::kVelocity}, p1{"P1", Quantity::kPressure},
       p2{"P2", Quantity::kPressure}, x{"x", Quantity::kPosition}, a{"a", Quantity::kAcceleration};
@@ -211,7 +150,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
   if (a.index >= 0) cols.push_back(&a);
   for (ColumnSpec* c : cols) {
     const std::string& h = header[static_cast<std::size_t>(c->index)];
-    c->unit = parse_unit(unit_of(h), c->quantity,
+    c->unit = parse_unit(header_unit(h), c->quantity,
                          fmt::format("{}:{}:{}", origin, header_line, c->index + 1), h);
     if (c->unit.gauge && c->quantity != Quantity::kPressure)
       throw Error(header_where, fmt::format("column {}: only pressures can be gauge", h));
@@ -228,7 +167,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
     for (ColumnSpec* c : cols) {
       const auto i = static_cast<std::size_t>(c->index);
       const std::string where = fmt::format("{}:{}:{} ({})", origin, n, i + 1, header[i]);
-      double value = parse_cell(trim(fields[i]), where) * c->unit.scale;
+      double value = parse_cell(trim_field(fields[i]), where) * c->unit.scale;
       if (c->quantity == Quantity::kVelocity && std::abs(value) > options.max_speed_m_per_s)
         throw Error(where, fmt::format("speed {} m/s is above {} m/s, faster than any pneumatic "
                                        "cylinder: is the unit right (m/s vs mm/s)?",

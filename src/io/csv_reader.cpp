@@ -14,17 +14,10 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_fields.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 
 namespace pneumachaos {
 namespace {
-
-std::string trim(std::string s) {
-  const auto not_space = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), not_space));
-  s.erase(std::find_if(s.rbegin(), s.rend(), not_space).base(), s.end());
-  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
-  return s;
-}
 
 // Fields of one line: comma-separated (our own CSV, spreadsheets) or, in a file without
 // commas, separated by runs of blanks (TISEAN and most lab exports).
@@ -33,23 +26,11 @@ std::vector<std::string> split(const std::string& line, bool commas) {
   std::string field;
   std::istringstream in(line);
   if (!commas) {
-    while (in >> field) fields.push_back(trim(field));
+    while (in >> field) fields.push_back(trim_field(field));
     return fields;
   }
-  for (const std::string& f : split_csv_fields(line)) fields.push_back(trim(f));
+  for (const std::string& f : split_csv_fields(line)) fields.push_back(trim_field(f));
   return fields;
-}
-
-std::string base_name(const std::string& header) {
-  const auto bracket = header.find('[');
-  return trim(bracket == std::string::npos ? header : header.substr(0, bracket));
-}
-
-std::string unit_of(const std::string& header) {
-  const auto open = header.find('[');
-  const auto close = header.find(']');
-  if (open == std::string::npos || close == std::string::npos || close < open) return "";
-  return header.substr(open + 1, close - open - 1);
 }
 
 bool is_number(const std::string& f) {
@@ -58,26 +39,6 @@ bool is_number(const std::string& f) {
   const auto [ptr, ec] = std::from_chars(f.data(), end, v);
   return !f.empty() && ptr == end && (ec == std::errc() || ec == std::errc::result_out_of_range);
 }
-
-// The lines of a record, numbered as in the file; blank lines and '#' comments are skipped.
-class LineSource {
- public:
-  explicit LineSource(const std::string& text) : in_(text) {}
-  bool next(std::string& line) {
-    while (std::getline(in_, line)) {
-      ++number_;
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      const std::string t = trim(line);
-      if (!t.empty() && t.front() != '#') return true;
-    }
-    return false;
-  }
-  [[nodiscard]] std::size_t number() const { return number_; }
-
- private:
-  std::istringstream in_;
-  std::size_t number_ = 0;
-};
 
 // The column layout, from the first line: a header of names, or (all fields numbers) none,
 // in which case columns are numbered from 1 and the first line is already data.
@@ -88,15 +49,6 @@ struct Layout {
   std::size_t header_line = 0;
   int value = -1, time = -1;
 };
-
-int find_column(const std::vector<std::string>& names, const std::vector<std::string>& wanted) {
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    for (const auto& n : wanted) {
-      if (names[i] == n || base_name(names[i]) == n) return static_cast<int>(i);
-    }
-  }
-  return -1;
-}
 
 // Without a header the column is given by its number (1 = first); "v", the default, means
 // the first column, as in TISEAN.
@@ -113,7 +65,7 @@ int numbered_column(const std::string& column, std::size_t count, const std::str
   return n - 1;
 }
 
-Layout read_layout(LineSource& lines, std::string& first, const std::string& origin,
+Layout read_layout(CsvLines& lines, std::string& first, const std::string& origin,
                    const CsvSeriesOptions& options) {
   if (!lines.next(first)) throw Error(origin, "the file is empty: expected a header line");
   Layout l;
@@ -142,20 +94,6 @@ Layout read_layout(LineSource& lines, std::string& first, const std::string& ori
                                       "sample rate (--rate)");
   }
   return l;
-}
-
-double parse_cell(const std::string& f, const std::string& where) {
-  double v = 0.0;
-  const char* end = f.data() + f.size();
-  const auto [ptr, ec] = std::from_chars(f.data(), end, v);
-  if (ec == std::errc::result_out_of_range && ptr == end) {
-    throw Error(where, fmt::format("{} is outside the range of a double (about 1.8e308)", f));
-  }
-  if (ec != std::errc() || ptr != end || f.empty()) {
-    throw Error(where, fmt::format("expected a number, got \"{}\"", f));
-  }
-  if (!std::isfinite(v)) throw Error(where, fmt::format("expected a finite number, got {}", f));
-  return v;
 }
 
 struct Columns {
@@ -225,8 +163,7 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
     throw Error("sampling rate", fmt::format("must be a positive number of Hz, got {}", *options.rate_Hz));
   }
   // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  LineSource lines(text.starts_with(kBom) ? text.substr(kBom.size()) : text);
+  CsvLines lines(text);
   std::string line;
   const Layout layout = read_layout(lines, line, origin, options);
   Columns c;
@@ -239,8 +176,8 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
   TimeSeries series(timed ? rate_from_times(c.times, origin, options.time_jitter) : *options.rate_Hz,
                     timed ? c.times.front() : 0.0);
   const std::string& header = layout.names[static_cast<std::size_t>(layout.value)];
-  series.add_channel(layout.has_header ? base_name(header) : header,
-                     layout.has_header ? unit_of(header) : "");
+  series.add_channel(layout.has_header ? header_name(header) : header,
+                     layout.has_header ? header_unit(header) : "");
   for (double v : c.values) series.append(std::span<const double>(&v, 1));
   return series;
 }

@@ -1,0 +1,39 @@
+#pragma once
+// The pieces every CSV record reader shares (the analysed series and the measured rig
+// records): numbered lines without blanks and comments, trimmed fields, "name[unit]" headers,
+// column lookup and strict number cells whose errors name file:line:column.
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace pneumachaos {
+
+/// Surrounding blanks and one pair of double quotes removed.
+std::string trim_field(std::string s);
+/// "v [mm/s]" -> "v"; a header without brackets is its own name.
+std::string header_name(const std::string& header);
+/// "P1[MPa gauge]" -> "MPa gauge"; "" without brackets.
+std::string header_unit(const std::string& header);
+
+/// Index of the first name of `wanted` (in its order; empty names skipped) that a column
+/// carries, either whole or as header_name(); -1 when none does.
+int find_column(const std::vector<std::string>& names, const std::vector<std::string>& wanted);
+
+/// A finite double, or Error(where) saying what the cell holds instead.
+double parse_cell(const std::string& field, const std::string& where);
+
+/// The lines of a record, numbered as in the file; a UTF-8 byte-order mark at the start
+/// (spreadsheet exports), blank lines, '#' comments and '\r' line ends skipped.
+class CsvLines {
+ public:
+  explicit CsvLines(const std::string& text);
+  bool next(std::string& line);
+  [[nodiscard]] std::size_t number() const { return number_; }
+
+ private:
+  std::istringstream in_;
+  std::size_t number_ = 0;
+};
+
+}  // namespace pneumachaos
