@@ -1,12 +1,14 @@
 // The neighbour index alone: building it and querying the nearest neighbour of every tenth
 // point, on 1e4 and 1e5 samples of the Lorenz x coordinate (dt = 0.01) embedded with delay
-// 17. BM_Reference* is the previous index, kept here: nanoflann's tree reading the delay
+// 17, and on 1e5 samples of white noise in dimension 7. BM_Reference* is the previous index, kept here: nanoflann's tree reading the delay
 // coordinates from the series (docs/performance.md); same neighbours, printed beside ours.
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_neighbours
 #include <benchmark/benchmark.h>
 
 #include <limits>
+#include <cstdint>
 #include <map>
+#include <utility>
 #include <nanoflann.hpp>
 
 #include "../tests/reference_series.hpp"
@@ -16,11 +18,21 @@ namespace {
 
 using namespace pneumachaos;
 
-const std::vector<double>& lorenz(std::size_t n) {
-  static std::map<std::size_t, std::vector<double>> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) it = cache.emplace(n, testing::lorenz_x(n)).first;
+// Arguments: samples, dimension, record (0: Lorenz x, delay 17; 1: white noise, delay 1, as
+// the analysis embeds them).
+const std::vector<double>& series(const benchmark::State& state) {
+  static std::map<std::pair<std::int64_t, std::int64_t>, std::vector<double>> cache;
+  const auto key = std::make_pair(state.range(0), state.range(2));
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    const auto n = static_cast<std::size_t>(key.first);
+    it = cache.emplace(key, key.second == 0 ? testing::lorenz_x(n) : testing::white_noise(n)).first;
+  }
   return it->second;
+}
+
+DelayEmbedding embedding(const benchmark::State& state) {
+  return {series(state), static_cast<std::size_t>(state.range(1)), state.range(2) == 0 ? 17u : 1u};
 }
 
 // The previous index's dataset: the coordinates read from the series on demand (this record
@@ -57,10 +69,9 @@ struct NearestOutside {
   [[nodiscard]] double worstDist() const { return d2; }
 };
 
-// Arguments: samples, dimension.
 void BM_ReferenceBuild(benchmark::State& state) {
-  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
-  const DelayEmbedding e(x, static_cast<std::size_t>(state.range(1)), 17);
+  const auto& x = series(state);
+  const DelayEmbedding e = embedding(state);
   const SeriesAdaptor adaptor{&e};
   for (auto _ : state) {
     ReferenceTree tree(static_cast<int>(e.dimension()), adaptor,
@@ -71,8 +82,8 @@ void BM_ReferenceBuild(benchmark::State& state) {
 }
 
 void BM_ReferenceNearestAll(benchmark::State& state) {
-  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
-  const DelayEmbedding e(x, static_cast<std::size_t>(state.range(1)), 17);
+  const auto& x = series(state);
+  const DelayEmbedding e = embedding(state);
   const SeriesAdaptor adaptor{&e};
   ReferenceTree tree(static_cast<int>(e.dimension()), adaptor,
                      nanoflann::KDTreeSingleIndexAdaptorParams(16));
@@ -82,7 +93,7 @@ void BM_ReferenceNearestAll(benchmark::State& state) {
     double sum = 0.0;
     for (std::size_t i = 0; i < e.size(); i += 10) {
       for (std::size_t d = 0; d < e.dimension(); ++d) q[d] = e.coordinate(i, d);
-      NearestOutside r{i, 17};
+      NearestOutside r{i, e.delay()};
       tree.findNeighbors(r, q.data(), nanoflann::SearchParams());
       sum += r.d2;
     }
@@ -91,8 +102,8 @@ void BM_ReferenceNearestAll(benchmark::State& state) {
 }
 
 void BM_Build(benchmark::State& state) {
-  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
-  const DelayEmbedding e(x, static_cast<std::size_t>(state.range(1)), 17);
+  const auto& x = series(state);
+  const DelayEmbedding e = embedding(state);
   for (auto _ : state) {
     const NeighbourIndex index(e, 0, repeat_resolution(x));
     benchmark::DoNotOptimize(index.size());
@@ -100,18 +111,19 @@ void BM_Build(benchmark::State& state) {
 }
 
 void BM_NearestAll(benchmark::State& state) {
-  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
-  const DelayEmbedding e(x, static_cast<std::size_t>(state.range(1)), 17);
+  const auto& x = series(state);
+  const DelayEmbedding e = embedding(state);
   const NeighbourIndex index(e, 0, repeat_resolution(x));
   for (auto _ : state) {
     double sum = 0.0;
-    for (std::size_t i = 0; i < index.size(); i += 10) sum += index.nearest(i, 17).distance2;
+    for (std::size_t i = 0; i < index.size(); i += 10) sum += index.nearest(i, e.delay()).distance2;
     benchmark::DoNotOptimize(sum);
   }
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-  b->Args({10000, 1})->Args({10000, 3})->Args({10000, 6})->Args({100000, 3});
+  b->Args({10000, 1, 0})->Args({10000, 3, 0})->Args({10000, 6, 0})->Args({100000, 3, 0});
+  b->Args({100000, 7, 1});
   b->Unit(benchmark::kMillisecond);
 }
 BENCHMARK(BM_ReferenceBuild)->Apply(sizes);

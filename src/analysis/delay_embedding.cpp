@@ -91,6 +91,7 @@ struct Groups {
       member = representative;
       start.resize(points + 1);
       std::iota(start.begin(), start.end(), std::size_t{0});
+      identity = true;
       return;
     }
     std::vector<std::size_t> order(points);
@@ -113,8 +114,11 @@ struct Groups {
     start.push_back(member.size());
   }
 
+  bool identity = false;  ///< every vector distinct: tree point k is vector k
+
   // The first occurrence of tree point k outside query i's Theiler window, or npos.
   [[nodiscard]] std::size_t resolve(std::size_t k, std::size_t i, std::size_t theiler) const {
+    if (identity) return k + theiler < i || k > i + theiler ? k : std::string::npos;
     const auto first = member.begin() + static_cast<std::ptrdiff_t>(start[k]);
     const auto last = member.begin() + static_cast<std::ptrdiff_t>(start[k + 1]);
     if (*first + theiler < i) return *first;

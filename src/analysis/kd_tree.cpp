@@ -27,14 +27,17 @@ void KdTree::swap_rows(std::size_t a, std::size_t b) {
 }
 
 // Rows [first, last) reordered so that those with coordinate `cut` below `value` come first;
-// returns the first row at or above it. One pass, each row moved at most once.
-std::size_t KdTree::partition(std::size_t first, std::size_t last, std::size_t cut, double value) {
+// returns the first row at or above it, and the two sides' extents along the cut. One pass,
+// each row moved at most once.
+std::size_t KdTree::partition(std::size_t first, std::size_t last, std::size_t cut, double value,
+                              double& left_high, double& right_low) {
+  const auto at = [&](std::size_t row) { return points_[row * dim_ + cut]; };
   std::size_t i = first, j = last;
   while (true) {
-    while (i < j && points_[i * dim_ + cut] < value) ++i;
-    while (i < j && points_[(j - 1) * dim_ + cut] >= value) --j;
+    for (; i < j && at(i) < value; ++i) left_high = std::max(left_high, at(i));
+    for (; i < j && at(j - 1) >= value; --j) right_low = std::min(right_low, at(j - 1));
     if (i >= j) return i;
-    swap_rows(i++, --j);
+    swap_rows(i, j - 1);
   }
 }
 
@@ -62,16 +65,8 @@ std::uint32_t KdTree::build(std::size_t first, std::size_t last) {
   // put the middle of two adjacent doubles on lo itself).
   double split = cut_lo + 0.5 * widest;
   if (!(split > cut_lo)) split = cut_lo + widest;
-  const std::size_t mid = partition(first, last, cut, split);
   double left_high = cut_lo, right_low = hi_[cut];
-  for (std::size_t row = first; row < last; ++row) {
-    const double v = points_[row * dim_ + cut];
-    if (row < mid) {
-      left_high = std::max(left_high, v);
-    } else {
-      right_low = std::min(right_low, v);
-    }
-  }
+  const std::size_t mid = partition(first, last, cut, split, left_high, right_low);
   nodes_[n].left_high = left_high;
   nodes_[n].right_low = right_low;
   const std::uint32_t left = build(first, mid);

@@ -39,7 +39,8 @@ class KdTree {
 
   std::uint32_t build(std::size_t first, std::size_t last);
   void swap_rows(std::size_t a, std::size_t b);
-  std::size_t partition(std::size_t first, std::size_t last, std::size_t cut, double value);
+  std::size_t partition(std::size_t first, std::size_t last, std::size_t cut, double value,
+                        double& left_high, double& right_low);
 
   template <class Result>
   void visit(std::uint32_t n, const double* q, Result& result, double* offset,
@@ -48,9 +49,10 @@ class KdTree {
     if (node.left == 0) {
       for (std::size_t row = node.first; row < node.last; ++row) {
         const double* p = &points_[row * dim_];
+        const double worst = result.worstDist();
         double d2 = 0.0;
         for (std::size_t d = 0; d < dim_; ++d) d2 += (q[d] - p[d]) * (q[d] - p[d]);
-        if (d2 < result.worstDist()) result.addPoint(d2, id_[row]);
+        if (d2 < worst) result.addPoint(d2, id_[row]);
       }
       return;
     }
