@@ -22,7 +22,8 @@ cpu_and_rss() {
   local total=0 line
   for _ in $(seq "$repeats"); do
     rm -rf "$work/report"  # reproduce would resume the previous run's sweeps
-    line=$( { /usr/bin/time -f "%U %S %M" "$bin" "$@" > /dev/null 2> /dev/null; } 2>&1 | tail -1)
+    /usr/bin/time -o "$work/time" -f "%U %S %M" "$bin" "$@" > /dev/null 2>&1
+    line=$(tail -1 "$work/time")
     total=$(echo "$total $line" | awk '{printf "%.4f", $1 + $2 + $3}')
   done
   echo "$total $repeats $line" | awk '{printf "%.4f %.1f", $1 / $2, $5 / 1024}'
@@ -37,9 +38,9 @@ workload() {
   n1=$(cpu_and_rss "$new" "$repeats" "$@")
   o2=$(cpu_and_rss "$old" "$repeats" "$@")
   n2=$(cpu_and_rss "$new" "$repeats" "$@")
-  echo "$name $o1 $n1 $o2 $n2" | awk '{o = ($2 + $6) / 2; n = ($4 + $8) / 2;
-    printf "%-34s old %8.3f s %7.1f MB   new %8.3f s %7.1f MB   old/new %5.2f\n",
-           $1, o, $3, n, $5, o / n}'
+  printf "%-34s " "$name"
+  echo "$o1 $n1 $o2 $n2" | awk '{o = ($1 + $5) / 2; n = ($3 + $7) / 2;
+    printf "old %8.3f s %7.1f MB   new %8.3f s %7.1f MB   old/new %5.2f\n", o, $2, n, $4, o / n}'
 }
 
 printf "%-34s %s\n" "workload" "CPU seconds per run (mean of 2 alternating rounds), peak RSS"
