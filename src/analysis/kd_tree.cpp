@@ -48,7 +48,8 @@ std::uint32_t KdTree::build(std::size_t first, std::size_t last) {
   // Cut the coordinate of widest spread; the cell's box in one pass over its rows.
   std::fill(lo_.begin(), lo_.end(), std::numeric_limits<double>::infinity());
   std::fill(hi_.begin(), hi_.end(), -std::numeric_limits<double>::infinity());
-  for (const double* p = &points_[first * dim_]; p != &points_[last * dim_]; p += dim_) {
+  for (const double* p = points_.data() + first * dim_; p != points_.data() + last * dim_;
+       p += dim_) {
     for (std::size_t d = 0; d < dim_; ++d) {
       lo_[d] = std::min(lo_[d], p[d]);
       hi_[d] = std::max(hi_[d], p[d]);
