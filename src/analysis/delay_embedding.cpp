@@ -86,12 +86,10 @@ struct Groups {
       // Equal vectors need equal first coordinates: with no repeated value among them, every
       // group is one vector, in time order. This skips the lexicographic sort of the vectors,
       // most of the cost of an index on a record without repeats; the neighbours are the same.
-      representative.resize(points);
-      std::iota(representative.begin(), representative.end(), std::size_t{0});
-      member = representative;
-      start.resize(points + 1);
-      std::iota(start.begin(), start.end(), std::size_t{0});
+      // The tables are then the identity and are not stored (3 x 8 bytes a vector: 24 MB of
+      // a 1e6-sample analysis' peak memory).
       identity = true;
+      count = points;
       return;
     }
     std::vector<std::size_t> order(points);
@@ -112,9 +110,15 @@ struct Groups {
       member.push_back(order[n]);
     }
     start.push_back(member.size());
+    count = representative.size();
   }
 
-  bool identity = false;  ///< every vector distinct: tree point k is vector k
+  bool identity = false;  ///< every vector distinct: tree point k is vector k, no tables
+  std::size_t count = 0;  ///< tree points
+
+  [[nodiscard]] std::size_t first_of(std::size_t k) const {
+    return identity ? k : representative[k];
+  }
 
   // The first occurrence of tree point k outside query i's Theiler window, or npos.
   [[nodiscard]] std::size_t resolve(std::size_t k, std::size_t i, std::size_t theiler) const {
@@ -129,9 +133,10 @@ struct Groups {
 
 // The distinct vectors, copied once into one contiguous row-major block for the tree.
 std::vector<double> tree_points(const DelayEmbedding& e, const Groups& groups) {
-  std::vector<double> coords(groups.representative.size() * e.dimension());
+  std::vector<double> coords(groups.count * e.dimension());
   double* out = coords.data();
-  for (std::size_t i : groups.representative) {
+  for (std::size_t k = 0; k < groups.count; ++k) {
+    const std::size_t i = groups.first_of(k);
     for (std::size_t d = 0; d < e.dimension(); ++d) *out++ = e.coordinate(i, d);
   }
   return coords;
