@@ -1,6 +1,7 @@
 // Time of the whole analysis and of each Lyapunov estimator on 1e4 and 1e5 samples of the
 // Lorenz x coordinate (dt = 0.01); the ratio between the sizes shows the growth (N log N
-// would be ~11.5x for 10x the points).
+// would be ~11.5x for 10x the points). The previous build's figures: bench/compare_builds.sh
+// or this program built from the previous commit, run alternately (docs/performance.md).
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 
@@ -61,10 +62,23 @@ void BM_Wolf(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
 }
 
+// Wolf's program on 1e5 samples of white noise, called directly (the analysis no longer runs
+// it on records without deterministic structure), on the embedding the analysis chooses.
+void BM_WolfWhiteNoise(benchmark::State& state) {
+  const auto x = testing::white_noise(static_cast<std::size_t>(state.range(0)));
+  const DivergenceOptions d = embedding_of(x);
+  WolfOptions w;
+  w.dimension = d.dimension;
+  w.delay = d.delay;
+  w.theiler = d.theiler;
+  for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
+}
+
 BENCHMARK(BM_AnalyzeAll)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeWithSurrogates)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wolf)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WolfWhiteNoise)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

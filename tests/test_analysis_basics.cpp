@@ -1,8 +1,10 @@
 // Spectrum, autocorrelation and embedding parameters on series with known answers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/delay_embedding.hpp"
@@ -89,6 +91,49 @@ TEST(Embedding, NeighbourSearchMatchesBruteForceAndHonoursTheTheilerWindow) {
     const Neighbour nb = index.nearest(i, 50);
     EXPECT_EQ(nb.index, arg);
     EXPECT_DOUBLE_EQ(nb.distance2, best);
+  }
+}
+
+// The k-d tree (src/analysis/kd_tree.hpp) against an exhaustive search, every query: k
+// nearest and radius queries, dimensions 1 to 6, a chaotic record and a quantised one whose
+// coordinates repeat (equal values on the cut, repeated vectors grouped).
+TEST(Embedding, EveryQueryMatchesAnExhaustiveSearch) {
+  std::vector<double> quantised(1500);
+  for (std::size_t i = 0; i < quantised.size(); ++i) {
+    quantised[i] = std::round(8.0 * std::sin(0.07 * i) + 3.0 * std::sin(0.19 * i));
+  }
+  std::vector<double> chaotic = lorenz_x(1500);
+  for (const auto* x : {&chaotic, &quantised}) {
+    const double resolution = repeat_resolution(*x);
+    for (std::size_t dim : {1u, 3u, 6u}) {
+      const DelayEmbedding e(*x, dim, 5);
+      const NeighbourIndex index(e, 0, resolution);
+      for (std::size_t i = 0; i < e.size(); i += 7) {
+        // The index reports each distinct vector once (repeats are grouped).
+        std::set<std::vector<double>> seen;
+        std::vector<double> d2;
+        for (std::size_t j = 0; j < e.size(); ++j) {
+          const std::size_t gap = j > i ? j - i : i - j;
+          const double dist2 = e.distance2(i, j);
+          std::vector<double> v(dim);
+          for (std::size_t d = 0; d < dim; ++d) v[d] = e.coordinate(j, d);
+          if (gap > 10 && dist2 > resolution * resolution && seen.insert(v).second) {
+            d2.push_back(dist2);
+          }
+        }
+        std::sort(d2.begin(), d2.end());
+        ASSERT_FALSE(d2.empty());
+        const auto knn = index.k_nearest(i, 4, 10);
+        ASSERT_EQ(knn.size(), std::min<std::size_t>(4, d2.size()));
+        for (std::size_t k = 0; k < knn.size(); ++k) {
+          EXPECT_EQ(knn[k].distance2, d2[k]) << "dim " << dim << " query " << i;
+          EXPECT_EQ(e.distance2(i, knn[k].index), knn[k].distance2);
+        }
+        const double r = std::sqrt(d2[d2.size() / 50]);
+        const auto inside = std::count_if(d2.begin(), d2.end(), [&](double v) { return v < r * r; });
+        EXPECT_EQ(static_cast<std::ptrdiff_t>(index.within(i, r, 10).size()), inside);
+      }
+    }
   }
 }
 

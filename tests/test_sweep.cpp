@@ -330,23 +330,23 @@ std::string validation_error(const SweepSpec& spec) {
   return "no error";
 }
 
-TEST(Sweep, ModelExponentSettingsAreCheckedByTheirFlags) {
+TEST(Sweep, ModelExponentSettingsAreCheckedByName) {
   SweepSpec spec = small_spec();  // 2 s runs
   spec.model_exponent.enabled = true;
   spec.model_exponent.transient_s = 2.0;
-  EXPECT_EQ(validation_error(spec).find("--model-transient: 2 s: must be >= 0 and shorter"), 0u)
+  EXPECT_EQ(validation_error(spec).find("model exponent transient: 2 s: must be >= 0 and shorter"), 0u)
       << validation_error(spec);
   spec.model_exponent.transient_s = 1.0;
   spec.model_exponent.measure_s = 0.1;
-  EXPECT_EQ(validation_error(spec).find("--model-measure: 0.1 s of measurement hold fewer than 10"),
+  EXPECT_EQ(validation_error(spec).find("model exponent measure: 0.1 s of measurement hold fewer than 10"),
             0u)
       << validation_error(spec);
   spec.model_exponent.measure_s = -1.0;
-  EXPECT_EQ(validation_error(spec).find("--model-measure: -1 s: must be a number >= 0"), 0u)
+  EXPECT_EQ(validation_error(spec).find("model exponent measure: -1 s: must be a number >= 0"), 0u)
       << validation_error(spec);
   spec.model_exponent.measure_s = 0.0;
   spec.model_exponent.renormalize_s = 0.0;
-  EXPECT_EQ(validation_error(spec).find("--model-renormalize: 0 s: must be a positive number"), 0u)
+  EXPECT_EQ(validation_error(spec).find("model exponent renormalize: 0 s: must be a positive number"), 0u)
       << validation_error(spec);
 }
 

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <nanoflann.hpp>
 #include <numeric>
 #include <string>
 
+#include "kd_tree.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
@@ -86,11 +86,10 @@ struct Groups {
       // Equal vectors need equal first coordinates: with no repeated value among them, every
       // group is one vector, in time order. This skips the lexicographic sort of the vectors,
       // most of the cost of an index on a record without repeats; the neighbours are the same.
-      representative.resize(points);
-      std::iota(representative.begin(), representative.end(), std::size_t{0});
-      member = representative;
-      start.resize(points + 1);
-      std::iota(start.begin(), start.end(), std::size_t{0});
+      // The tables are then the identity and are not stored (3 x 8 bytes a vector: 24 MB of
+      // a 1e6-sample analysis' peak memory).
+      identity = true;
+      count = points;
       return;
     }
     std::vector<std::size_t> order(points);
@@ -111,10 +110,19 @@ struct Groups {
       member.push_back(order[n]);
     }
     start.push_back(member.size());
+    count = representative.size();
+  }
+
+  bool identity = false;  ///< every vector distinct: tree point k is vector k, no tables
+  std::size_t count = 0;  ///< tree points
+
+  [[nodiscard]] std::size_t first_of(std::size_t k) const {
+    return identity ? k : representative[k];
   }
 
   // The first occurrence of tree point k outside query i's Theiler window, or npos.
   [[nodiscard]] std::size_t resolve(std::size_t k, std::size_t i, std::size_t theiler) const {
+    if (identity) return k + theiler < i || k > i + theiler ? k : std::string::npos;
     const auto first = member.begin() + static_cast<std::ptrdiff_t>(start[k]);
     const auto last = member.begin() + static_cast<std::ptrdiff_t>(start[k + 1]);
     if (*first + theiler < i) return *first;
@@ -123,26 +131,19 @@ struct Groups {
   }
 };
 
-// nanoflann's dataset adaptor: the coordinates are read from the series on demand, so the
-// embedded vectors are never materialised.
-struct Adaptor {
-  const DelayEmbedding* e;
-  const Groups* groups;
-  [[nodiscard]] std::size_t kdtree_get_point_count() const { return groups->representative.size(); }
-  [[nodiscard]] double kdtree_get_pt(std::size_t k, std::size_t d) const {
-    return e->coordinate(groups->representative[k], d);
+// The distinct vectors, copied once into one contiguous row-major block for the tree.
+std::vector<double> tree_points(const DelayEmbedding& e, const Groups& groups) {
+  std::vector<double> coords(groups.count * e.dimension());
+  double* out = coords.data();
+  for (std::size_t k = 0; k < groups.count; ++k) {
+    const std::size_t i = groups.first_of(k);
+    for (std::size_t d = 0; d < e.dimension(); ++d) *out++ = e.coordinate(i, d);
   }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
+  return coords;
+}
 
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
-                                                 Adaptor, -1, std::size_t>;
-
-// Result sets in nanoflann's protocol that drop the query's own repeats and temporal
-// neighbours while the tree is searched, so no over-fetching is needed.
+// Result sets in nanoflann's protocol (kept by kd_tree.hpp) that drop the query's own repeats
+// and temporal neighbours while the tree is searched, so no over-fetching is needed.
 class ExcludingKnn {
  public:
   ExcludingKnn(const Groups& g, std::size_t query, std::size_t theiler, std::size_t k,
@@ -173,6 +174,30 @@ class ExcludingKnn {
   std::vector<Neighbour> found_;
 };
 
+// The nearest alone, as ExcludingKnn with k = 1 (the first found among equals stays) but
+// without a list: Cao and the divergence curve ask this once per reference.
+class ExcludingNearest {
+ public:
+  ExcludingNearest(const Groups& g, std::size_t query, std::size_t theiler, double min_d2)
+      : g_(g), query_(query), theiler_(theiler), min_d2_(min_d2) {}
+  bool addPoint(double d2, std::size_t k) {
+    if (d2 <= min_d2_ || d2 >= best_.distance2) return true;
+    const std::size_t j = g_.resolve(k, query_, theiler_);
+    if (j != std::string::npos) best_ = Neighbour{j, d2};
+    return true;
+  }
+  [[nodiscard]] double worstDist() const { return best_.distance2; }
+  [[nodiscard]] bool found() const { return best_.distance2 < kNone; }
+  [[nodiscard]] Neighbour best() const { return best_; }
+
+ private:
+  static constexpr double kNone = std::numeric_limits<double>::max();
+  const Groups& g_;
+  std::size_t query_, theiler_;
+  double min_d2_;
+  Neighbour best_{0, kNone};
+};
+
 class ExcludingRadius {
  public:
   ExcludingRadius(const Groups& g, std::size_t query, std::size_t theiler, double r2, double min_d2)
@@ -201,21 +226,16 @@ struct NeighbourIndex::Impl {
   const DelayEmbedding* embedding;
   std::size_t points;
   Groups groups;
-  Adaptor adaptor;
-  Tree tree;
+  detail::KdTree tree;
   std::vector<double> query;
   double min_d2;
   Impl(const DelayEmbedding& e, std::size_t n, double resolution)
       : embedding(&e),
         points(n),
         groups(e, n),
-        adaptor{&e, &groups},
-        tree(static_cast<int>(e.dimension()), adaptor,
-             nanoflann::KDTreeSingleIndexAdaptorParams(16)),
+        tree(tree_points(e, groups), e.dimension()),
         query(e.dimension()),
-        min_d2(resolution * resolution) {
-    tree.buildIndex();
-  }
+        min_d2(resolution * resolution) {}
   const double* point(std::size_t i) {
     for (std::size_t d = 0; d < embedding->dimension(); ++d) query[d] = embedding->coordinate(i, d);
     return query.data();
@@ -236,18 +256,19 @@ std::size_t NeighbourIndex::size() const { return impl_->points; }
 std::vector<Neighbour> NeighbourIndex::k_nearest(std::size_t i, std::size_t k,
                                                  std::size_t theiler) const {
   ExcludingKnn result(impl_->groups, i, theiler, k, impl_->min_d2);
-  impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
+  impl_->tree.search(impl_->point(i), result);
   return result.take();
 }
 
 Neighbour NeighbourIndex::nearest(std::size_t i, std::size_t theiler) const {
-  auto found = k_nearest(i, 1, theiler);
-  return found.empty() ? Neighbour{size(), 0.0} : found.front();
+  ExcludingNearest result(impl_->groups, i, theiler, impl_->min_d2);
+  impl_->tree.search(impl_->point(i), result);
+  return result.found() ? result.best() : Neighbour{size(), 0.0};
 }
 
 std::vector<Neighbour> NeighbourIndex::within(std::size_t i, double r, std::size_t theiler) const {
   ExcludingRadius result(impl_->groups, i, theiler, r * r, impl_->min_d2);
-  impl_->tree.findNeighbors(result, impl_->point(i), nanoflann::SearchParams());
+  impl_->tree.search(impl_->point(i), result);
   return result.take();
 }
 

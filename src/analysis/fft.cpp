@@ -1,6 +1,7 @@
 #include "pneumachaos/analysis/fft.hpp"
 
 #include <kissfft.hh>
+#include <memory>
 
 namespace pneumachaos {
 
@@ -14,16 +15,52 @@ std::size_t fast_fft_size(std::size_t min_size) {
   }
 }
 
+namespace {
+
+// Transforms in -> out with one of the last plans made, kept per thread. Making
+// a plan computes n twiddle factors (complex exponentials): in a sweep, where every record has
+// the same length, that was half the cost of the autocorrelation (docs/performance.md).
+// Plans beyond 2^17 points (1e6-sample records) are made for the call and not kept, so they
+// add nothing to the analysis' peak memory.
+void transform(std::size_t n, bool inverse, const std::complex<double>* in,
+               std::complex<double>* out) {
+  constexpr std::size_t kLargestKept = std::size_t{1} << 17;
+  if (n > kLargestKept) {
+    kissfft<double>(n, inverse).transform(in, out);
+    return;
+  }
+  // One analysis uses a few sizes (autocorrelation, periodogram, spectrum segments).
+  constexpr std::size_t kSlots = 4;
+  struct Kept {
+    std::size_t n = 0;
+    bool inverse = false;
+    std::unique_ptr<kissfft<double>> plan;
+  };
+  thread_local Kept kept[kSlots];
+  thread_local std::size_t next = 0;
+  for (const Kept& k : kept) {
+    if (k.plan && k.n == n && k.inverse == inverse) {
+      k.plan->transform(in, out);
+      return;
+    }
+  }
+  Kept& k = kept[next++ % kSlots];
+  k = Kept{n, inverse, std::make_unique<kissfft<double>>(n, inverse)};
+  k.plan->transform(in, out);
+}
+
+}  // namespace
+
 std::vector<std::complex<double>> forward_dft(std::span<const double> x, std::size_t n) {
   std::vector<std::complex<double>> in(n, 0.0), out(n);
   for (std::size_t i = 0; i < std::min(n, x.size()); ++i) in[i] = x[i];
-  kissfft<double>(n, false).transform(in.data(), out.data());
+  transform(n, false, in.data(), out.data());
   return out;
 }
 
 std::vector<double> inverse_dft_real(const std::vector<std::complex<double>>& X) {
   std::vector<std::complex<double>> out(X.size());
-  kissfft<double>(X.size(), true).transform(X.data(), out.data());
+  transform(X.size(), true, X.data(), out.data());
   std::vector<double> re(X.size());
   for (std::size_t i = 0; i < X.size(); ++i) re[i] = out[i].real();
   return re;

@@ -77,7 +77,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   const std::size_t blocks = o.jackknife_blocks;
   BlockSums bs{std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0)),
                std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
-  std::vector<double> shifted;
+  std::vector<double> shifted, d2(p.K + 1);
   for (std::size_t i = p.margin; i < p.usable; i += stride) {
     const Neighbour nb = index.nearest(i, o.theiler);
     if (nb.index >= p.usable || nb.index < p.margin) continue;
@@ -87,14 +87,17 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
     const std::span<const double> other =
         p.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
                   : x.subspan(nb.index, span);
+    // Coordinate by coordinate over all steps (contiguous, so the compiler vectorises it);
+    // each d2[k] still sums its coordinates in order, so the values are the same.
+    std::fill(d2.begin(), d2.end(), 0.0);
+    for (std::size_t d = 0; d < e.dimension(); ++d) {
+      const double* a = x.data() + i + d * o.delay;
+      const double* c = other.data() + d * o.delay;
+      for (std::size_t k = 0; k <= p.K; ++k) d2[k] += (a[k] - c[k]) * (a[k] - c[k]);
+    }
     for (std::size_t k = 0; k <= p.K; ++k) {
-      double d2 = 0.0;
-      for (std::size_t d = 0; d < e.dimension(); ++d) {
-        const double diff = x[i + k + d * o.delay] - other[k + d * o.delay];
-        d2 += diff * diff;
-      }
-      if (d2 > 0.0) {
-        bs.sum[b][k] += 0.5 * std::log(d2);
+      if (d2[k] > 0.0) {
+        bs.sum[b][k] += 0.5 * std::log(d2[k]);
         bs.count[b][k] += 1.0;
       }
     }

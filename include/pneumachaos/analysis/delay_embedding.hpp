@@ -1,6 +1,6 @@
 #pragma once
 // Delay vectors y_i = (x_i, x_{i+tau}, ..., x_{i+(m-1)tau}) of a scalar series (Takens), and
-// nearest-neighbour queries on them through a k-d tree (nanoflann), so that the cost grows
+// nearest-neighbour queries on them through a k-d tree (src/analysis/kd_tree.hpp), so that the cost grows
 // about as N log N rather than N^2.
 
 #include <cstddef>

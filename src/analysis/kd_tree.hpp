@@ -1,0 +1,81 @@
+#pragma once
+// An exact k-d tree whose points are stored in tree order: each node's points are one
+// contiguous block of rows, so building and searching read memory in sequence rather than
+// gathering each coordinate through a permutation (nanoflann's layout). On this machine that
+// gather was half of a whole analysis (docs/performance.md). Internal to the analysis module;
+// results are reported through nanoflann's result-set protocol (addPoint, worstDist), and the
+// search prunes with the incremental distance to the cell (Arya & Mount), as nanoflann does.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pneumachaos::detail {
+
+class KdTree {
+ public:
+  /// `coords`: point k at coords[k * dim .. k * dim + dim); the tree reports k.
+  KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = 16);
+
+  /// Offers every point that may be closer than result.worstDist() to result.addPoint(d2, k).
+  template <class Result>
+  void search(const double* query, Result& result) const {
+    if (nodes_.empty()) return;
+    // Per-query scratch on the stack: a heap allocation per query cost as much as a search.
+    constexpr std::size_t kStack = 16;
+    double stack[kStack] = {};
+    std::vector<double> heap(dim_ > kStack ? dim_ : 0, 0.0);
+    visit(0, query, result, dim_ > kStack ? heap.data() : stack, 0.0);
+  }
+
+ private:
+  struct Node {
+    std::size_t first = 0, last = 0;  ///< rows [first, last) below this node
+    std::uint32_t left = 0, right = 0;  ///< children; both 0 for a leaf
+    std::size_t cut = 0;               ///< coordinate split on
+    double split = 0.0;  ///< left rows have coordinate < split, right rows >= split
+    double left_high = 0.0, right_low = 0.0;  ///< the children's extents along the cut
+  };
+
+  std::uint32_t build(std::size_t first, std::size_t last);
+  void swap_rows(std::size_t a, std::size_t b);
+  std::size_t partition(std::size_t first, std::size_t last, std::size_t cut, double value,
+                        double& left_high, double& right_low);
+
+  template <class Result>
+  void visit(std::uint32_t n, const double* q, Result& result, double* offset,
+             double bound) const {
+    const Node& node = nodes_[n];
+    if (node.left == 0) {
+      for (std::size_t row = node.first; row < node.last; ++row) {
+        const double* p = &points_[row * dim_];
+        const double worst = result.worstDist();
+        double d2 = 0.0;
+        for (std::size_t d = 0; d < dim_; ++d) d2 += (q[d] - p[d]) * (q[d] - p[d]);
+        if (d2 < worst) result.addPoint(d2, id_[row]);
+      }
+      return;
+    }
+    const bool left_first = q[node.cut] < node.split;
+    visit(left_first ? node.left : node.right, q, result, offset, bound);
+    // The far child's points lie at least |diff| away along the cut (its extent, as
+    // nanoflann): replace this coordinate's share of the lower bound on their distance.
+    const double diff =
+        left_first ? node.right_low - q[node.cut] : q[node.cut] - node.left_high;
+    const double saved = offset[node.cut];
+    const double far_bound = bound - saved * saved + diff * diff;
+    if (far_bound < result.worstDist()) {
+      offset[node.cut] = diff;
+      visit(left_first ? node.right : node.left, q, result, offset, far_bound);
+      offset[node.cut] = saved;
+    }
+  }
+
+  std::size_t dim_, leaf_;
+  std::vector<double> points_;   ///< rows in tree order
+  std::vector<std::size_t> id_;  ///< row -> point k
+  std::vector<Node> nodes_;      ///< nodes_[0] is the root
+  std::vector<double> lo_, hi_;  ///< scratch of the build: one cell's box
+};
+
+}  // namespace pneumachaos::detail
