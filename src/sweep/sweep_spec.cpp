@@ -35,7 +35,7 @@ void ModelExponentSpec::validate(double duration_s) const {
   const ModelLyapunovOptions o = options(duration_s);
   // The uncertainty is the spread between blocks: each needs at least one renormalisation.
   if (o.measure_s < o.renormalize_s * static_cast<double>(o.blocks)) {
-    throw Error(measure_s > 0.0 ? "--model-measure" : "model exponent transient",
+    throw Error(measure_s > 0.0 ? "model exponent measure" : "model exponent transient",
                 fmt::format("{} s of measurement hold fewer than {} renormalisations of {} s",
                             o.measure_s, o.blocks, o.renormalize_s));
   }
