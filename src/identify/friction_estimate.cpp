@@ -7,10 +7,12 @@
 #include <limits>
 #include <numeric>
 
+#include "friction_steps.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos::identify {
-namespace {
+
+namespace detail {
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -31,170 +33,26 @@ std::vector<double> moving_mean(const std::vector<double>& y, std::size_t h) {
   return out;
 }
 
-// Slope at sample i of the least-squares quadratic through samples lo..hi (one-sided
-// Savitzky-Golay near a stick boundary); a line for three points or fewer, 0 for one.
-double local_quadratic_slope(const std::vector<double>& y, std::size_t lo, std::size_t hi,
-                             std::size_t i, double dt) {
-  const std::size_t m = hi - lo + 1;
-  if (m < 2) return 0.0;
-  double S[5] = {0, 0, 0, 0, 0}, T[3] = {0, 0, 0};
-  for (std::size_t k = lo; k <= hi; ++k) {
-    const double x = double(k) - double(i);
-    double p = 1.0;
-    for (int q = 0; q < 5; ++q) {
-      if (q < 3) T[q] += p * y[k];
-      S[q] += p;
-      p *= x;
-    }
-  }
-  if (m <= 3) {  // a line
-    const double den = S[0] * S[2] - S[1] * S[1];
-    return den != 0.0 ? (S[0] * T[1] - S[1] * T[0]) / den / dt : 0.0;
-  }
-  // Normal equations [S0 S1 S2; S1 S2 S3; S2 S3 S4] c = T; the slope is c1 (Cramer).
-  const auto det3 = [](double a, double b, double c, double d, double e, double f, double g,
-                       double h, double k) {
-    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-  };
-  const double D = det3(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4]);
-  if (D == 0.0) return 0.0;
-  const double D1 = det3(S[0], T[0], S[2], S[1], T[1], S[3], S[2], T[2], S[4]);
-  return D1 / D / dt;
-}
-
 int sign_of(double v) { return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0); }
 
-// Point B of one excursion: where the accelerating branch (begin..peak) and the decelerating
-// one (peak..end) cross in the F-v plane, compared on a grid of speeds over both branches.
-std::optional<LoopMark> branch_crossing(const FrictionEstimate& e, const std::vector<double>& Fs,
-                                        std::size_t begin, std::size_t peak, std::size_t end,
-                                        int dir) {
-  const double top = dir * e.v_smooth_m_per_s[peak];
-  const double lo = e.stick_threshold_m_per_s;
-  if (!(top > 2.0 * lo) || peak - begin < 4 || end - peak < 4) return std::nullopt;
-  constexpr int kGrid = 24;
-  const double half = 0.5 * (0.95 * top - lo) / kGrid;
-  const auto branch_mean = [&](std::size_t from, std::size_t to, double u, std::size_t& nearest) {
-    double s = 0.0, best = std::numeric_limits<double>::infinity();
-    std::size_t c = 0;
-    for (std::size_t i = from; i < to; ++i) {
-      const double d = std::abs(dir * e.v_smooth_m_per_s[i] - u);
-      if (d <= half) {
-        s += Fs[i];
-        ++c;
-      }
-      if (d < best) {
-        best = d;
-        nearest = i;
-      }
-    }
-    return c ? s / double(c) : std::numeric_limits<double>::quiet_NaN();
-  };
-  double prev_diff = std::numeric_limits<double>::quiet_NaN(), prev_u = 0.0, prev_f = 0.0;
-  for (int g = 0; g < kGrid; ++g) {
-    const double u = lo + (2 * g + 1) * half;
-    std::size_t ia = begin, id = peak;
-    const double fa = branch_mean(begin, peak + 1, u, ia);
-    const double fd = branch_mean(peak, end, u, id);
-    if (std::isnan(fa) || std::isnan(fd)) continue;
-    const double diff = fa - fd;
-    if (!std::isnan(prev_diff) && sign_of(diff) != sign_of(prev_diff) && diff != 0.0) {
-      const double w = prev_diff / (prev_diff - diff);
-      LoopMark b;
-      b.label = 'B';
-      b.v_m_per_s = dir * (prev_u + w * (u - prev_u));
-      b.F_N = prev_f + w * (0.5 * (fa + fd) - prev_f);
-      b.index = ia;
-      return b;
-    }
-    prev_diff = diff;
-    prev_u = u;
-    prev_f = 0.5 * (fa + fd);
-  }
-  return std::nullopt;
-}
+}  // namespace detail
 
-}  // namespace
+namespace {
 
-EstimateSettings estimate_settings_from(const Scenario& s) {
-  EstimateSettings e;
-  e.area_head_m2 = s.cylinder.area_head_m2();
-  e.area_rod_m2 = s.cylinder.area_rod_m2();
-  e.mass_kg = s.load.coupling == LoadCoupling::kRigid ? s.load.mass_kg
-                                                       : s.load.piston_mass_kg + s.load.mass_kg;
-  e.ambient_Pa = s.ambient_pressure_Pa;
-  e.external_force_N = s.load.external_force_N;
-  return e;
-}
+using detail::median;
+using detail::moving_mean;
+using detail::sign_of;
 
-std::size_t FrictionEstimate::sliding_count() const {
-  return static_cast<std::size_t>(std::count(sliding.begin(), sliding.end(), 1));
-}
+using Rest = std::pair<std::size_t, std::size_t>;
 
-std::vector<double> savitzky_golay_derivative(const std::vector<double>& y, double dt,
-                                              std::size_t h) {
-  const std::size_t n = y.size();
-  std::vector<double> d(n, 0.0);
-  if (n < 2) return d;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t w = std::min({h, i, n - 1 - i});
-    if (w == 0) {
-      d[i] = i == 0 ? (y[1] - y[0]) / dt : (y[n - 1] - y[n - 2]) / dt;
-      continue;
-    }
-    double s = 0.0;
-    for (std::size_t k = 1; k <= w; ++k) s += double(k) * (y[i + k] - y[i - k]);
-    const double wd = double(w);
-    d[i] = 3.0 * s / (wd * (wd + 1.0) * (2.0 * wd + 1.0) * dt);
-  }
-  return d;
-}
-
-std::size_t choose_sg_half_width(double noise, double third, double dt) {
-  std::size_t best = 2;
-  double best_cost = std::numeric_limits<double>::infinity();
-  for (std::size_t h = 2; h <= 100; ++h) {
-    const double hd = double(h);
-    const double var = noise * noise * 3.0 / (dt * dt * hd * (hd + 1.0) * (2.0 * hd + 1.0));
-    const double bias = third * dt * dt * (3.0 * hd * hd + 3.0 * hd - 1.0) / 30.0;
-    const double cost = var + bias * bias;
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = h;
-    }
-  }
-  return best;
-}
-
-double noise_sd(const std::vector<double>& y) {
-  if (y.size() < 3) return 0.0;
-  std::vector<double> d2(y.size() - 2);
-  for (std::size_t i = 1; i + 1 < y.size(); ++i) d2[i - 1] = y[i + 1] - 2.0 * y[i] + y[i - 1];
-  const double m = median(d2);
-  for (double& v : d2) v = std::abs(v - m);
-  return 1.4826 * median(d2) / std::sqrt(6.0);
-}
-
-FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettings& s) {
-  check_measured_record(r, 20);
-  if (!(s.area_head_m2 > 0.0) || !(s.area_rod_m2 > 0.0) || !(s.mass_kg > 0.0))
-    throw Error(r.source, "the friction estimate needs positive areas A1, A2 and a moving mass");
-  const std::size_t n = r.size();
-  const double dt = r.dt_s();
-  FrictionEstimate e;
-  e.t_s = r.t_s;
-  e.v_m_per_s = r.v_m_per_s;
-  e.v_smooth_m_per_s = moving_mean(r.v_m_per_s, 2);
-  e.velocity_noise_m_per_s = noise_sd(r.v_m_per_s);
-  e.stick_threshold_m_per_s = s.stick_threshold_m_per_s.value_or(
-      std::max(4.0 * e.velocity_noise_m_per_s, 0.5e-3));
+// Stick intervals: |v| (5-point mean) below the threshold for at least min_stick_s; marks
+// e.stuck and returns the intervals [begin, end).
+std::vector<Rest> find_rests(FrictionEstimate& e, double min_stick_s, double dt) {
+  const std::size_t n = e.v_m_per_s.size();
   const double thr = e.stick_threshold_m_per_s;
-
-  // Stick intervals: |v| (5-point mean) below the threshold for at least min_stick_s.
   e.stuck.assign(n, 0);
-  e.sliding.assign(n, 0);
-  const auto min_len = static_cast<std::size_t>(std::max(2.0, std::ceil(s.min_stick_s / dt)));
-  std::vector<std::pair<std::size_t, std::size_t>> rests;
+  const auto min_len = static_cast<std::size_t>(std::max(2.0, std::ceil(min_stick_s / dt)));
+  std::vector<Rest> rests;
   for (std::size_t i = 0; i < n;) {
     if (std::abs(e.v_smooth_m_per_s[i]) >= thr) {
       ++i;
@@ -216,70 +74,12 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
     }
     i = j;
   }
-  // Acceleration: given, or the Savitzky-Golay derivative with the noise/bias window.
-  if (r.a_m_per_s2) {
-    e.a_m_per_s2 = *r.a_m_per_s2;
-    e.acceleration_given = true;
-  } else {
-    const std::size_t h_max = std::max<std::size_t>(1, std::min<std::size_t>(100, (n - 1) / 2));
-    std::vector<std::size_t> widths(n, 0);
-    if (s.sg_half_width) {
-      std::fill(widths.begin(), widths.end(), std::min(h_max, std::max<std::size_t>(1, *s.sg_half_width)));
-    } else {
-      // The window is chosen per sample (docs/friction.md): the third derivative from a wide
-      // fixed window (three nested derivatives of half-width 25), its largest magnitude within
-      // 50 samples either side as the local bias scale, so that transients (breakaways,
-      // stops) get a short window and smooth sliding a long one.
-      const auto a_wide = savitzky_golay_derivative(r.v_m_per_s, dt, 25);
-      const auto j_wide = savitzky_golay_derivative(a_wide, dt, 25);
-      const auto v3 = savitzky_golay_derivative(j_wide, dt, 25);
-      constexpr std::size_t kReach = 50;
-      std::vector<double> local(n, 0.0);
-      // Sliding maximum of |v'''| over +-kReach (monotone queue).
-      std::vector<std::size_t> dq;
-      std::size_t head = 0;
-      for (std::size_t i = 0, next = 0; i < n; ++i) {
-        for (; next < n && next <= i + kReach; ++next) {
-          while (dq.size() > head && std::abs(v3[dq.back()]) <= std::abs(v3[next])) dq.pop_back();
-          dq.push_back(next);
-        }
-        while (dq[head] + kReach < i) ++head;
-        local[i] = std::abs(v3[dq[head]]);
-      }
-      for (std::size_t i = 0; i < n; ++i)
-        widths[i] = std::min(h_max, choose_sg_half_width(e.velocity_noise_m_per_s, local[i], dt));
-    }
-    // Each sample's window stays on its side of a stick boundary: the acceleration jumps at a
-    // breakaway and at a stop, and a window across the jump would smear it (one-sided local
-    // quadratic fits there). Inside a stick the piston is at rest: a = 0.
-    e.a_m_per_s2.assign(n, 0.0);
-    std::size_t run_begin = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (e.stuck[i]) {
-        run_begin = i + 1;
-        continue;
-      }
-      std::size_t run_end = i;  // last sample of this moving run
-      while (run_end + 1 < n && !e.stuck[run_end + 1]) ++run_end;
-      const std::size_t h = widths[i];
-      const std::size_t lo = std::max(run_begin, i >= h ? i - h : 0);
-      const std::size_t hi = std::min(run_end, i + h);
-      if (lo + h == i && i + h == hi) {
-        double acc = 0.0;
-        for (std::size_t k = 1; k <= h; ++k) acc += double(k) * (r.v_m_per_s[i + k] - r.v_m_per_s[i - k]);
-        const double wd = double(h);
-        e.a_m_per_s2[i] = 3.0 * acc / (wd * (wd + 1.0) * (2.0 * wd + 1.0) * dt);
-      } else {
-        e.a_m_per_s2[i] = local_quadratic_slope(r.v_m_per_s, lo, hi, i, dt);
-      }
-    }
-    std::vector<double> wd(widths.begin(), widths.end());
-    e.sg_half_width = static_cast<std::size_t>(median(wd));
-    e.sg_half_width_min = *std::min_element(widths.begin(), widths.end());
-    e.sg_half_width_max = *std::max_element(widths.begin(), widths.end());
-    e.sg_half_widths = std::move(widths);
-  }
+  return rests;
+}
 
+// F = A1 (P1 - Pa) - A2 (P2 - Pa) - F_ext - m a, or the force given in the settings.
+void compute_forces(const MeasuredRecord& r, const EstimateSettings& s, FrictionEstimate& e) {
+  const std::size_t n = r.size();
   e.F_N.resize(n);
   e.drive_N.resize(n);
   e.gauge_sum_Pa.resize(n);
@@ -296,154 +96,110 @@ FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettin
                                         s.force_N->size(), n));
     e.F_N = *s.force_N;
   }
-  const auto F_smooth = moving_mean(e.F_N, 5);
-  {
-    std::vector<double> dev(n);
-    for (std::size_t i = 0; i < n; ++i) dev[i] = std::abs(e.F_N[i] - F_smooth[i]);
-    e.force_noise_N = 1.4826 * median(dev) * std::sqrt(11.0 / 10.0);
-  }
+}
 
+// The breakaway force of the stick [i, j): at the last sample of the stick whose velocity is
+// still within the velocity noise (a slow Stribeck breakaway creeps through the stick band for
+// a few samples while the drive keeps rising), from a line through the 10 samples up to it
+// (the force is rising; a line averages the noise without lag).
+double breakaway_force(const FrictionEstimate& e, std::size_t i, std::size_t j, int direction) {
+  const double dir = double(direction);
+  std::size_t last = j - 1;
+  while (last > i && dir * e.v_m_per_s[last] > 2.0 * e.velocity_noise_m_per_s) --last;
+  const std::size_t m = std::min<std::size_t>(10, last + 1 - i);
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t k = last + 1 - m; k <= last; ++k) {
+    const double x = double(k) - double(last);
+    sx += x;
+    sy += e.F_N[k];
+    sxx += x * x;
+    sxy += x * e.F_N[k];
+  }
+  const double md = double(m), den = md * sxx - sx * sx;
+  const double slope = den > 0.0 ? (md * sxy - sx * sy) / den : 0.0;
+  return (sy - slope * sx) / md;  // the line's value at x = 0 (sample `last`)
+}
+
+void add_sticks(const MeasuredRecord& r, const std::vector<Rest>& rests, FrictionEstimate& e) {
+  const std::size_t n = r.size();
   for (const auto& [i, j] : rests) {
     StickInterval st;
     st.begin = i;
     st.end = j;
     st.t_begin_s = r.t_s[i];
     st.t_end_s = r.t_s[j - 1];
+    st.breakaway_N = std::numeric_limits<double>::quiet_NaN();
     if (j < n) {
       st.direction = sign_of(e.v_smooth_m_per_s[j]);
-      // The breakaway instant: the last sample of the stick whose smoothed velocity is still
-      // within the velocity noise (a slow Stribeck breakaway creeps through the stick band
-      // for a few samples while the drive keeps rising). The force there from a line through
-      // the 10 samples up to it (the force is rising; a line averages the noise without lag).
-      const double dir = double(st.direction);
-      std::size_t last = j - 1;
-      while (last > i && dir * e.v_m_per_s[last] > 2.0 * e.velocity_noise_m_per_s) --last;
-      const std::size_t m = std::min<std::size_t>(10, last + 1 - i);
-      double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-      for (std::size_t k = last + 1 - m; k <= last; ++k) {
-        const double x = double(k) - double(last);
-        sx += x;
-        sy += e.F_N[k];
-        sxx += x * x;
-        sxy += x * e.F_N[k];
-      }
-      const double md = double(m), den = md * sxx - sx * sx;
-      const double slope = den > 0.0 ? (md * sxy - sx * sy) / den : 0.0;
-      st.breakaway_N = (sy - slope * sx) / md;  // the line's value at x = 0 (sample `last`)
-    } else {
-      st.breakaway_N = std::numeric_limits<double>::quiet_NaN();
+      st.breakaway_N = breakaway_force(e, i, j, st.direction);
     }
     e.sticks.push_back(st);
   }
+}
+
+// The samples the curve and the fits use: outside sticks, |v| above the threshold both raw
+// and smoothed, and not just before a stop. A stop is abrupt (the velocity drops to rest
+// within a sample or two): the differentiator's window straddling it smears an impulsive
+// deceleration over its width, so the samples within a half-width (+2) before a stick go.
+void mark_sliding(FrictionEstimate& e) {
+  const std::size_t n = e.v_m_per_s.size();
+  const double thr = e.stick_threshold_m_per_s;
+  e.sliding.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     e.sliding[i] = !e.stuck[i] && std::abs(e.v_smooth_m_per_s[i]) > thr &&
                    e.v_m_per_s[i] * sign_of(e.v_smooth_m_per_s[i]) > thr;
-  // A stop is abrupt (the velocity drops to rest within a sample or two): the differentiator's
-  // window straddling it smears an impulsive deceleration over its width, so the samples
-  // within a half-width (+2) before a stick are not used for the curve or the fits.
   for (const StickInterval& st : e.sticks) {
     const std::size_t guard =
         (e.acceleration_given || st.begin == 0 ? 0 : e.sg_half_widths[st.begin - 1]) + 2;
     for (std::size_t k = st.begin > guard ? st.begin - guard : 0; k < st.begin; ++k) e.sliding[k] = 0;
   }
+}
 
-  // The binned steady curve, per direction, from the threshold to the largest speed.
-  for (int dir : {-1, 1}) {
-    double top = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (e.sliding[i] && dir * e.v_m_per_s[i] > 0) top = std::max(top, dir * e.v_m_per_s[i]);
-    if (!(top > thr) || s.curve_bins == 0) continue;
-    const double width = (top - thr) / double(s.curve_bins);
-    std::vector<CurveBin> bins(s.curve_bins);
-    std::vector<double> sum_v(s.curve_bins, 0.0), sum_f(s.curve_bins, 0.0), sum_f2(s.curve_bins, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double u = dir * e.v_m_per_s[i];
-      if (!e.sliding[i] || u < thr) continue;
-      const auto b = std::min(s.curve_bins - 1, static_cast<std::size_t>((u - thr) / width));
-      ++bins[b].count;
-      sum_v[b] += e.v_m_per_s[i];
-      sum_f[b] += e.F_N[i];
-      sum_f2[b] += e.F_N[i] * e.F_N[i];
-    }
-    std::vector<CurveBin> kept;
-    for (std::size_t b = 0; b < s.curve_bins; ++b) {
-      const double a = thr + double(b) * width, c = a + width;
-      bins[b].v_lo_m_per_s = dir > 0 ? a : -c;
-      bins[b].v_hi_m_per_s = dir > 0 ? c : -a;
-      if (bins[b].count == 0) continue;
-      const double m = double(bins[b].count);
-      bins[b].v_mean_m_per_s = sum_v[b] / m;
-      bins[b].F_mean_N = sum_f[b] / m;
-      bins[b].F_sd_N = bins[b].count > 1
-                           ? std::sqrt(std::max(0.0, (sum_f2[b] - sum_f[b] * sum_f[b] / m) / (m - 1.0)))
-                           : 0.0;
-      kept.push_back(bins[b]);
-    }
-    if (dir < 0) std::reverse(kept.begin(), kept.end());
-    e.curve.insert(e.curve.end(), kept.begin(), kept.end());
-  }
+// Robust sd of F(t) about its 11-point mean (MAD, corrected for the mean's own share).
+double force_noise(const std::vector<double>& F, const std::vector<double>& F_smooth) {
+  std::vector<double> dev(F.size());
+  for (std::size_t i = 0; i < F.size(); ++i) dev[i] = std::abs(F[i] - F_smooth[i]);
+  return 1.4826 * median(dev) * std::sqrt(11.0 / 10.0);
+}
 
-  // Excursions: the runs outside sticks, split at velocity reversals (a crossing of the
-  // threshold in the opposite direction; the split at the last sample of the old sign).
-  for (std::size_t i = 0; i < n;) {
-    if (e.stuck[i]) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < n && !e.stuck[j]) ++j;
-    const bool from_stick = i > 0, to_stick = j < n;
-    std::size_t begin = i;
-    int dir = 0;
-    bool begins_at_stick = from_stick;
-    for (std::size_t k = i; k < j; ++k) {
-      const double v = e.v_smooth_m_per_s[k];
-      if (dir == 0) {
-        if (std::abs(v) > thr) dir = sign_of(v);
-        continue;
-      }
-      if (-dir * v > thr) {
-        std::size_t split = k;
-        while (split > begin && sign_of(e.v_smooth_m_per_s[split - 1]) != dir) --split;
-        Excursion ex;
-        ex.begin = begin;
-        ex.end = split;
-        ex.direction = dir;
-        ex.from_stick = begins_at_stick;
-        e.excursions.push_back(ex);
-        begin = split;
-        begins_at_stick = false;
-        dir = -dir;
-      }
-    }
-    if (dir != 0) {
-      Excursion ex;
-      ex.begin = begin;
-      ex.end = j;
-      ex.direction = dir;
-      ex.from_stick = begins_at_stick;
-      ex.to_stick = to_stick;
-      e.excursions.push_back(ex);
-    }
-    i = j;
-  }
-  // The Fig. 3 marks.
-  for (Excursion& ex : e.excursions) {
-    if (ex.end - ex.begin < 3) continue;
-    const int dir = ex.direction;
-    std::size_t peak = ex.begin;
-    for (std::size_t k = ex.begin; k < ex.end; ++k)
-      if (dir * e.v_smooth_m_per_s[k] > dir * e.v_smooth_m_per_s[peak]) peak = k;
-    if (ex.from_stick) {
-      const auto st = std::find_if(e.sticks.begin(), e.sticks.end(),
-                                   [&](const StickInterval& s2) { return s2.end == ex.begin; });
-      ex.marks.push_back({'A', ex.begin, e.v_m_per_s[ex.begin],
-                          st != e.sticks.end() ? st->breakaway_N : F_smooth[ex.begin]});
-    }
-    if (auto b = branch_crossing(e, F_smooth, ex.begin, peak, ex.end, dir)) ex.marks.push_back(*b);
-    ex.marks.push_back({'C', peak, e.v_m_per_s[peak], F_smooth[peak]});
-    if (ex.to_stick) ex.marks.push_back({'D', ex.end - 1, e.v_m_per_s[ex.end - 1], F_smooth[ex.end - 1]});
-  }
+}  // namespace
+
+EstimateSettings estimate_settings_from(const Scenario& s) {
+  EstimateSettings e;
+  e.area_head_m2 = s.cylinder.area_head_m2();
+  e.area_rod_m2 = s.cylinder.area_rod_m2();
+  e.mass_kg = s.load.coupling == LoadCoupling::kRigid ? s.load.mass_kg
+                                                       : s.load.piston_mass_kg + s.load.mass_kg;
+  e.ambient_Pa = s.ambient_pressure_Pa;
+  e.external_force_N = s.load.external_force_N;
+  return e;
+}
+
+std::size_t FrictionEstimate::sliding_count() const {
+  return static_cast<std::size_t>(std::count(sliding.begin(), sliding.end(), 1));
+}
+
+FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettings& s) {
+  check_measured_record(r, 20);
+  if (!(s.area_head_m2 > 0.0) || !(s.area_rod_m2 > 0.0) || !(s.mass_kg > 0.0))
+    throw Error(r.source, "the friction estimate needs positive areas A1, A2 and a moving mass");
+  FrictionEstimate e;
+  e.t_s = r.t_s;
+  e.v_m_per_s = r.v_m_per_s;
+  e.v_smooth_m_per_s = moving_mean(r.v_m_per_s, 2);
+  e.velocity_noise_m_per_s = noise_sd(r.v_m_per_s);
+  e.stick_threshold_m_per_s = s.stick_threshold_m_per_s.value_or(
+      std::max(4.0 * e.velocity_noise_m_per_s, 0.5e-3));
+  const std::vector<Rest> rests = find_rests(e, s.min_stick_s, r.dt_s());
+  detail::estimate_acceleration(r, s, e);
+  compute_forces(r, s, e);
+  const auto F_smooth = moving_mean(e.F_N, 5);
+  e.force_noise_N = force_noise(e.F_N, F_smooth);
+  add_sticks(r, rests, e);
+  mark_sliding(e);
+  detail::add_steady_curve(e, s.curve_bins);
+  detail::add_excursions(e);
+  detail::add_loop_marks(e, F_smooth);
   return e;
 }
 
