@@ -27,6 +27,7 @@ Action add_analyze(CLI::App& app);
 Action add_sweep(CLI::App& app);
 Action add_lyapunov(CLI::App& app);
 Action add_reproduce(CLI::App& app);
+Action add_friction(CLI::App& app);
 
 /// Exit codes shared by all commands.
 inline constexpr int kExitOk = 0;

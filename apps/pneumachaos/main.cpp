@@ -33,6 +33,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_sweep);
   add(pneumachaos::cli::add_lyapunov);
   add(pneumachaos::cli::add_reproduce);
+  add(pneumachaos::cli::add_friction);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

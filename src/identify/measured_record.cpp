@@ -33,7 +33,7 @@ void check_measured_record(const MeasuredRecord& r, std::size_t min_samples) {
   // A rig's A/D clock is uniform; a gap or a repeated stamp means samples were lost, and every
   // derivative and fit below assumes a fixed step.
   for (std::size_t i = 1; i < r.size(); ++i)
-    if (std::abs(r.t_s[i] - r.t_s[i - 1] - dt) > 1e-3 * dt)
+    if (std::abs(r.t_s[i] - r.t_s[i - 1] - dt) > 1e-2 * dt)
       throw Error(r.source, fmt::format("time is not uniform at sample {} (t = {} s): step {} s, "
                                         "expected {} s", i + 1, r.t_s[i], r.t_s[i] - r.t_s[i - 1], dt));
 }

@@ -4,6 +4,10 @@
 // FrictionModel classes and the Plant's right-hand side both call these; private to the
 // model module.
 //
+// The laws are also templated on the parameter type P: FrictionParams for the plant, or a
+// struct with the same members holding automatic-differentiation scalars when the friction
+// parameters themselves are fitted (src/identify/friction_fit.cpp).
+//
 // The double instantiation must keep the arithmetic of the hand-written laws it replaced,
 // operation for operation, so that simulations stay bit-identical.
 
@@ -14,8 +18,8 @@
 namespace pneumachaos::friction_law {
 
 /// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/model.md).
-template <typename T>
-T texture_factor(const FrictionParams& p, const T& position_m) {
+template <typename T, typename P>
+T texture_factor(const P& p, const T& position_m) {
   using std::sin;
   T f(1.0);
   for (const TextureMode& m : p.texture)
@@ -24,27 +28,27 @@ T texture_factor(const FrictionParams& p, const T& position_m) {
 }
 
 /// Fc with its pressure dependence and texture (docs/model.md).
-template <typename T>
-T coulomb_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
+template <typename T, typename P>
+T coulomb_N(const P& p, const BasicFrictionInput<T>& in) {
   return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *
          texture_factor(p, in.position_m);
 }
 
 /// Fs, likewise.
-template <typename T>
-T static_N(const FrictionParams& p, const BasicFrictionInput<T>& in) {
+template <typename T, typename P>
+T static_N(const P& p, const BasicFrictionInput<T>& in) {
   return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(p, in.position_m);
 }
 
 /// exp(-(|speed|/vs)^delta), the Stribeck drop's weight.
-template <typename T>
-T stribeck_weight(const FrictionParams& p, const T& speed) {
+template <typename T, typename P>
+T stribeck_weight(const P& p, const T& speed) {
   using std::abs;
   using std::exp;
   using std::pow;
   using std::sqrt;
   const T u = abs(speed) / p.stribeck_velocity_m_per_s;
-  const double delta = p.stribeck_exponent;
+  const auto& delta = p.stribeck_exponent;  // double, or a fitted Jet
   // The common exponents avoid pow(), which dominated the derivative's cost.
   T w;
   if (delta == 2.0) {
@@ -60,16 +64,16 @@ T stribeck_weight(const FrictionParams& p, const T& speed) {
 }
 
 /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
-template <typename T>
-T stribeck_level_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& speed) {
+template <typename T, typename P>
+T stribeck_level_N(const P& p, const BasicFrictionInput<T>& in, const T& speed) {
   const T fc = coulomb_N(p, in);
   return fc + (static_N(p, in) - fc) * stribeck_weight(p, speed);
 }
 
 /// Sliding force of the stiction models in `direction` (+1/-1): `classic`, paper eq. (4),
 /// Fc sgn v + B v; `stribeck`, [Fc + (Fs - Fc) exp(-(|v|/vs)^delta)] sgn v + B v.
-template <typename T>
-T stiction_sliding_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction) {
+template <typename T, typename P>
+T stiction_sliding_N(const P& p, const BasicFrictionInput<T>& in, int direction) {
   // The mode fixes the sign, so the force is smooth within a sliding segment.
   const double d = direction;
   T speed = d * in.v_m_per_s;
@@ -81,8 +85,8 @@ T stiction_sliding_N(const FrictionParams& p, const BasicFrictionInput<T>& in, i
 
 /// LuGre (Canudas de Wit et al. 1995): dz/dt = v - sigma0 |v| z / g(v),
 /// F = sigma0 z + sigma1 dz/dt + sigma2 v. Writes dz/dt to dz.
-template <typename T>
-T lugre_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& z, T& dz) {
+template <typename T, typename P>
+T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz) {
   using std::abs;
   const T& v = in.v_m_per_s;
   const T g = stribeck_level_N(p, in, v);
@@ -93,8 +97,8 @@ T lugre_N(const FrictionParams& p, const BasicFrictionInput<T>& in, const T& z, 
 /// Hess-Soom lag (docs/model.md): the Stribeck weight s lags the velocity by tau, writes
 /// ds/dt = (exp(-(|v|/vs)^delta) - s) / tau; F = [Fc + (Fs - Fc) s] sgn v + B v while
 /// sliding in `direction`.
-template <typename T>
-T stribeck_lag_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction,
+template <typename T, typename P>
+T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
                  const T& s, T& ds) {
   const double d = direction;
   T speed = d * in.v_m_per_s;
@@ -106,16 +110,16 @@ T stribeck_lag_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int d
 
 /// Rates of the internal states while the contact rests: LuGre's bristles hold still; the
 /// lagged Stribeck weight recovers towards its value at v = 0, which is 1.
-template <typename T>
-void resting_rates(const FrictionParams& p, const T* z, T* dz, std::size_t count) {
+template <typename T, typename P>
+void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) dz[i] = T(0.0);
   if (p.lagged()) dz[0] = (1.0 - z[0]) / p.lag_time_s;
 }
 
 /// The force of whichever model `p.kind` names, while the contact moves; z and dz point to
 /// the model's internal states (none for the stiction models).
-template <typename T>
-T moving_force_N(const FrictionParams& p, const BasicFrictionInput<T>& in, int direction,
+template <typename T, typename P>
+T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction,
                  const T* z, T* dz) {
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0]);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);

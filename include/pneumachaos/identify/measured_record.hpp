@@ -25,7 +25,7 @@ struct MeasuredRecord {
 
 /// Throws Error naming `source` when the columns differ in length, a value is not finite,
 /// the record has fewer than `min_samples` samples, or the time column is not uniform
-/// (relative jitter above 1e-3 of the step).
+/// (a step more than 1 % from the mean step).
 void check_measured_record(const MeasuredRecord& record, std::size_t min_samples = 100);
 
 }  // namespace pneumachaos::identify

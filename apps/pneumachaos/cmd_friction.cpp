@@ -1,0 +1,107 @@
+// `pneumachaos friction`: seal friction from a measured record (docs/friction.md).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/identify/friction_fits.hpp"
+#include "pneumachaos/identify/friction_output.hpp"
+#include "pneumachaos/identify/measured_record_csv.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/scenario_toml.hpp"
+
+namespace pneumachaos::cli {
+
+Action add_friction(CLI::App& app) {
+  struct Args {
+    std::string file;
+    ScenarioArgs scenario;
+    std::string json, series_out, scenario_out;
+    std::vector<std::string> models;
+    identify::RecordColumns columns;
+    bool pressure_dependent = false;
+    std::optional<int> window;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "friction",
+      "Seal friction from a measured record (t, v, P1, P2): force from the equation of motion, "
+      "stick intervals, breakaway forces, the friction-velocity curve and loops, and fitted "
+      "friction models (classic, Stribeck, LuGre) with standard errors");
+  cmd->add_option("file", args->file,
+                  "record: CSV with a header naming columns and units, e.g. t[s],v[m/s],"
+                  "P1[Pa],P2[Pa] (also mm/s, kPa, MPa, bar, [MPa gauge]); - reads standard input")
+      ->required()
+      ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
+  add_scenario_options(cmd, args->scenario);
+  cmd->add_option("--json", args->json, "write every result with its unit as JSON to this file");
+  cmd->add_option("--series-out", args->series_out,
+                  "directory for F(t), F(v), the binned curve, each model's curve and the loop "
+                  "marks as CSV");
+  cmd->add_option("--scenario-out", args->scenario_out,
+                  "write the preferred model as a scenario [friction] table (TOML)");
+  cmd->add_option("--model", args->models,
+                  "model to fit (repeatable): classic | stribeck | stribeck_delta | lugre "
+                  "(default: all)");
+  cmd->add_flag("--pressure-dependent", args->pressure_dependent,
+                "fit Fc and Fs growing with P1+P2-2Pa (Fc_gain_N_per_MPa, Fs_gain_N_per_MPa)");
+  cmd->add_option("--window", args->window,
+                  "Savitzky-Golay window in samples (odd, >= 3; default: chosen from the noise)");
+  cmd->add_option("--column-v", args->columns.v, "header name of the velocity column (default v)");
+  cmd->add_option("--column-P1", args->columns.P1, "header name of chamber 1's pressure (default P1)");
+  cmd->add_option("--column-P2", args->columns.P2, "header name of chamber 2's pressure (default P2)");
+  cmd->add_option("--column-x", args->columns.x, "header name of the position column (default x)");
+  cmd->add_option("--column-a", args->columns.a, "header name of an acceleration column (default a)");
+  return [args]() {
+    const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
+    identify::FrictionFitOptions fit;
+    if (!args->models.empty()) {
+      fit.models.clear();
+      for (const auto& m : args->models) {
+        const auto model = identify::parse_fit_model(m, "--model");
+        if (std::find(fit.models.begin(), fit.models.end(), model) == fit.models.end())
+          fit.models.push_back(model);
+      }
+    }
+    fit.pressure_dependent = args->pressure_dependent;
+    fit.fixed_exponent = scenario.friction.stribeck_exponent;
+    fit.start = scenario.friction;
+    identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+    if (args->window) {
+      if (*args->window < 3 || *args->window % 2 == 0)
+        throw Error("--window", fmt::format("expected an odd number of samples >= 3, got {}", *args->window));
+      settings.sg_half_width = static_cast<std::size_t>(*args->window / 2);
+    }
+    identify::RecordReadOptions read;
+    read.ambient_Pa = scenario.ambient_pressure_Pa;
+    read.stroke_m = scenario.cylinder.stroke_m;
+    const identify::MeasuredRecord record = identify::read_measured_record(args->file, args->columns, read);
+    const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
+    const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
+    fmt::print("{}", identify::friction_summary(estimate, fits));
+    // A fit that did not converge: its reason, exit 3, and nothing written.
+    if (const auto* failed = fits.failed())
+      throw RunError(fmt::format("friction fit {}", failed->name),
+                     fmt::format("did not converge ({}); no output written", failed->summary));
+    const identify::ModelFit* preferred = nullptr;
+    for (const auto& f : fits.fits)
+      if (f.name == fits.preferred_model) preferred = &f;
+    if (!args->scenario_out.empty() && !preferred)
+      throw RunError("--scenario-out", "no model could be fitted (see above); no output written");
+    OutputSet outputs;
+    if (!args->json.empty())
+      outputs.add(args->json) << identify::friction_json(estimate, fits, settings, record.source) << '\n';
+    if (!args->series_out.empty()) identify::write_friction_series(estimate, fits, args->series_out, outputs);
+    if (!args->scenario_out.empty())
+      outputs.add(args->scenario_out) << identify::friction_scenario_toml(*preferred, record.source);
+    outputs.commit();
+    return kExitOk;
+  };
+}
+
+}  // namespace pneumachaos::cli

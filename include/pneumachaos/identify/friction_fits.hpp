@@ -1,0 +1,73 @@
+#pragma once
+// Friction models fitted to a friction estimate (docs/friction.md, "Fits"): classic (eq. 4),
+// Stribeck with delta fixed or free, LuGre; optionally pressure dependent. Ceres Solver for
+// the least squares and the covariance of the parameters.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/model/friction.hpp"
+
+namespace pneumachaos::identify {
+
+enum class FrictionFitModel { kClassic, kStribeck, kStribeckDelta, kLuGre };
+
+/// "classic", "stribeck" (delta fixed), "stribeck_delta" (delta free), "lugre".
+const char* fit_model_name(FrictionFitModel m);
+/// Throws Error naming `where` for an unknown name.
+FrictionFitModel parse_fit_model(const std::string& name, const std::string& where);
+std::vector<FrictionFitModel> all_fit_models();
+
+struct FrictionFitOptions {
+  std::vector<FrictionFitModel> models = all_fit_models();
+  bool pressure_dependent = false;  ///< fit Fc_gain_N_per_MPa and Fs_gain_N_per_MPa too
+  double fixed_exponent = 2.0;      ///< delta of "stribeck" (the scenario's, from the CLI)
+  /// LuGre start (and the Stribeck levels when no Stribeck fit is available).
+  FrictionParams start;
+  int max_iterations = 100;
+};
+
+/// A parameter as the scenario names it (Fc_N, Fs_N, vs_mm_per_s, B_Ns_per_m, ...), in that
+/// key's unit. stderr is NaN when the covariance is not available (rank deficient).
+struct FittedParameter {
+  std::string name;
+  double value = 0.0;
+  double stderr_value = 0.0;
+  std::string unit;
+  bool fixed = false;  ///< held at its value (delta of "stribeck"; LuGre's levels)
+};
+
+struct ModelFit {
+  FrictionFitModel model = FrictionFitModel::kClassic;
+  std::string name;
+  bool fitted = false;
+  std::string skipped;     ///< why not fitted (too few sliding samples), when !fitted
+  bool converged = false;  ///< fitted but not converged: `summary` says why
+  std::string summary;     ///< Ceres' one-line report
+  std::vector<FittedParameter> params;
+  FrictionParams friction;  ///< the fitted law, for curves and the scenario fragment
+  double rms_N = 0.0;       ///< residual RMS on the comparison set (sliding + breakaways)
+  std::size_t points = 0;   ///< size of the comparison set
+  std::size_t free_params = 0;
+  double bic = 0.0;
+  double aic = 0.0;
+  [[nodiscard]] const FittedParameter* param(const std::string& name) const;
+};
+
+struct FrictionFits {
+  std::vector<ModelFit> fits;
+  std::string preferred_model;  ///< smallest BIC among the converged fits; "" if none
+  std::string criterion = "BIC";
+  /// The first fit that did not converge, if any (the CLI exits 3).
+  [[nodiscard]] const ModelFit* failed() const;
+};
+
+FrictionFits fit_friction(const FrictionEstimate& estimate, const FrictionFitOptions& options);
+
+/// The steady friction of a fitted law at velocity v (gauge sum for pressure dependence).
+double steady_friction_N(const FrictionParams& p, double v_m_per_s, double gauge_sum_Pa);
+
+}  // namespace pneumachaos::identify

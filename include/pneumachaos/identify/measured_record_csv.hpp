@@ -1,0 +1,54 @@
+#pragma once
+// Reading a measured record (docs/friction.md, "Input"): a CSV whose header names the columns
+// with their units in brackets, as `simulate` writes them (t[s], v[m/s], P1[Pa], P2[Pa],
+// x[m], a[m/s^2]). Every value is converted once, here, to the SI units and absolute
+// pressures of MeasuredRecord.
+
+#include <optional>
+#include <string>
+
+#include "pneumachaos/identify/measured_record.hpp"
+
+namespace pneumachaos::identify {
+
+/// Standard atmosphere (Pa): the ambient pressure added to gauge readings when no scenario
+/// gives one (the scenario key ambient.pressure_kPa does).
+inline constexpr double kStandardAmbientPa = 101325.0;
+/// Largest absolute pressure accepted (Pa): above the range of any pneumatic rig.
+inline constexpr double kMaxRecordPressurePa = 10.0e6;
+
+/// Header names of the columns (matched exactly, or as the name before "[unit]"). Empty x or
+/// a: the column is optional and looked for under its default name only.
+struct RecordColumns {
+  std::string t = "t";  ///< also found as "time"
+  std::string v = "v";
+  std::string P1 = "P1";
+  std::string P2 = "P2";
+  std::string x = "x";  ///< optional
+  std::string a = "a";  ///< optional
+};
+
+struct RecordReadOptions {
+  /// Added to pressures whose unit carries the `gauge` marker, e.g. P1[MPa gauge].
+  double ambient_Pa = kStandardAmbientPa;
+  /// Cylinder stroke (m): when given, a velocity whose integral travels further than
+  /// 1.5 strokes (plus 10 mm) is refused as being in the wrong unit.
+  std::optional<double> stroke_m;
+};
+
+/// Accepted units: time s, ms; velocity m/s, mm/s; pressure Pa, kPa, MPa, bar, psi, each
+/// optionally followed by "gauge" (or "g": "bar g"); position m, mm; acceleration m/s^2,
+/// mm/s^2. A column without a unit is taken as SI. Throws Error naming file:line[:column] for:
+/// a missing column (naming it and listing the header), an unknown unit, a cell that is not
+/// a finite number, a row with the wrong number of fields, an absolute pressure below 0 or
+/// above 10 MPa, non-increasing or non-uniform time, a velocity implausibly large for the
+/// stroke, fewer than 100 samples. Path "-" reads standard input.
+MeasuredRecord read_measured_record(const std::string& path, const RecordColumns& names,
+                                    const RecordReadOptions& options = {});
+
+/// The same from text in memory; `origin` names it in errors.
+MeasuredRecord parse_measured_record(const std::string& text, const std::string& origin,
+                                     const RecordColumns& names,
+                                     const RecordReadOptions& options = {});
+
+}  // namespace pneumachaos::identify
