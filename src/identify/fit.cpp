@@ -5,6 +5,7 @@
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
+#include <glog/logging.h>
 
 #include <algorithm>
 #include <chrono>
@@ -359,7 +360,12 @@ StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
   co.num_threads = 1;
   ceres::Covariance covariance(co);
   std::vector<std::pair<const double*, const double*>> blocks{{q.data(), q.data()}};
-  if (!covariance.Compute(blocks, &problem)) {
+  // Ceres logs a rank deficiency through glog as well; the RunError below says it.
+  const int log_level = FLAGS_minloglevel;
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  const bool computed = covariance.Compute(blocks, &problem);
+  FLAGS_minloglevel = log_level;
+  if (!computed) {
     throw RunError("fit", fmt::format(
         "the fit's covariance is rank-deficient: the record does not determine all of the "
         "free parameters (fix some with --set and drop them from --free); Ceres: {}",

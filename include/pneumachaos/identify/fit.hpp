@@ -4,6 +4,7 @@
 // Ceres Solver minimises the noise-scaled simulation error; its covariance gives the standard
 // errors.
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -107,5 +108,18 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
 /// reports as its validation series, for any scenario.
 ValidationSeries segment_simulation(const MeasuredRecord& record, const Scenario& scenario,
                                     const FitOptions& options = {});
+
+/// The --json document of `pneumachaos fit`: parameters.<key>.{value, stderr, unit, start},
+/// rms, cost, method settings, the Ceres summary (docs/fit.md lists every field).
+std::string fit_json(const FitResult& result, const FitOptions& options,
+                     const MeasuredRecord& record);
+
+/// The validation series as CSV: t[s], v_meas[m/s], v_sim[m/s], P1_meas[Pa], P1_sim[Pa],
+/// P2_meas[Pa], P2_sim[Pa], segment[-] (the segment's index).
+std::string validation_csv(const ValidationSeries& series);
+
+/// gnuplot commands (no terminal) plotting `csv_file` (validation_csv) as three panels:
+/// v, P1, P2, measured against simulated.
+std::string validation_plot_commands(const std::string& csv_file);
 
 }  // namespace pneumachaos::identify
