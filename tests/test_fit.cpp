@@ -1,12 +1,16 @@
 // fit_model (docs/fit.md): synthetic "measured" records from our own model with known S1, S2,
 // degraded as an A/D rig degrades them (pressure noise 300 Pa, 12-bit quantisation, velocity
 // noise 0.5 mm/s, 6 s), fitted from start values 20-30 % off. S1 and S2 must come back within
-// 5 %. The stick-slip record runs under the CTest label `long`.
+// 5 %. The sixteen-record accuracy table (docs/fit.md) runs under the CTest label `long`.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+
+#include <fmt/format.h>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
@@ -77,19 +81,29 @@ TEST(Fit, RecoversS1S2FromClassicSealRecord) {
   expect_recovered(r, truth, 0.05);
 }
 
+// The accuracy table of docs/fit.md: eight stick-slip and eight sliding records (seeds 1-8),
+// four free parameters from S1 x1.25, S2 x0.78, Fc x1.2, Fs x0.9. Printed per record.
 TEST(Fit, RecoversS1S2FromStickSlipRecord) {
   if (std::getenv("PNEUMACHAOS_LONG_TESTS") == nullptr) {
     GTEST_SKIP() << "long test: ctest -L long";
   }
-  const Scenario truth = rig("stribeck", 2.70, 0.05);
-  for (const auto& [seed, f1, f2] : {std::tuple{21, 0.75, 1.3}, std::tuple{22, 0.8, 0.75},
-                                     std::tuple{23, 1.25, 1.25}}) {
-    const MeasuredRecord record = synthetic_record(truth, 6.0, RigDegradation{}, seed);
-    const Scenario start = off_start(truth, f1, f2, 1.2, 0.9);
-    const FitResult r = fit_model(record, start, default_free_keys(start));
-    expect_recovered(r, truth, 0.05);
-    EXPECT_NEAR(param(r, "friction.Fs_N").value / truth.friction.static_N, 1.0, 0.05);
-    EXPECT_NEAR(param(r, "friction.Fc_N").value / truth.friction.coulomb_N, 1.0, 0.05);
+  for (const double S2 : {0.05, 0.35}) {
+    const Scenario truth = rig("stribeck", 2.70, S2);
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+      const MeasuredRecord record = synthetic_record(truth, 6.0, RigDegradation{}, seed);
+      const Scenario start = off_start(truth, 1.25, 0.78, 1.2, 0.9);
+      const FitResult r = fit_model(record, start, default_free_keys(start));
+      const auto err = [&](const char* key, double t) {
+        const auto& p = param(r, key);
+        return fmt::format("{:+.2f} % (+- {:.2f} %)", 100 * (p.value / t - 1), 100 * p.standard_error / t);
+      };
+      std::printf("S2 = %.2f mm^2, seed %d: S1 %s, S2 %s, Fc %s, Fs %s; %.1f s\n", S2,
+                  static_cast<int>(seed), err("circuit.S1_mm2", 2.70).c_str(),
+                  err("circuit.S2_mm2", S2).c_str(),
+                  err("friction.Fc_N", truth.friction.coulomb_N).c_str(),
+                  err("friction.Fs_N", truth.friction.static_N).c_str(), r.wall_time_s);
+      expect_recovered(r, truth, 0.05);
+    }
   }
 }
 

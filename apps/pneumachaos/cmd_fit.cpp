@@ -55,7 +55,7 @@ Action add_fit(CLI::App& app) {
   cmd->add_option("--column-P1", args->columns.P1, "name of the head-side pressure column (default P1)");
   cmd->add_option("--column-P2", args->columns.P2, "name of the rod-side pressure column (default P2)");
   cmd->add_option("--column-x", args->columns.x, "name of the position column (default x; optional)");
-  cmd->add_option("--segment", args->segment_s, "segment length [s] of the final fit (default 0.05)")
+  cmd->add_option("--segment", args->segment_s, "segment length [s] of the final fit (default 0.2)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--pressure-scale", args->pressure_scale_Pa,
                   "noise scale dividing the pressure residuals [Pa] (default 1000)")

@@ -8,6 +8,7 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -112,12 +113,77 @@ Prepared prepare(const MeasuredRecord& record, const FitOptions& o) {
   return p;
 }
 
-// Simulates every segment of `prep` with `scenario`; writes P1, P2, v per sample (the
-// boundary sample of two segments holds the later segment's start). False when the plant
-// rejects the scenario or a segment's integration fails.
+// Simulates segment `seg` of `prep` on `plant` from the pressures P1_0, P2_0; writes P1, P2,
+// v, for its samples into the record-length arrays. False when the integration fails.
+bool simulate_one(const Plant& plant, const Scenario& scenario, const Prepared& prep,
+                  const Prepared::Segment& seg, double P1_0, double P2_0, const FitOptions& o,
+                  double* P1, double* P2, double* v, std::string* why, std::size_t base = 0) {
+  const StateLayout& L = plant.layout();
+  const double stroke = plant.geometry().stroke_m;
+  const double Pa = plant.ambient_pressure_Pa();
+  std::vector<double> state(L.size, 0.0);
+  const double x0 = plant.geometry().volumes_frozen() ? seg.x : std::clamp(seg.x, 0.0, stroke * (1 - 1e-9));
+  state[L.x] = x0;
+  state[L.v] = seg.v;
+  state[L.P1] = P1_0;
+  state[L.P2] = P2_0;
+  if (L.has_temperatures()) state[L.T1] = state[L.T2] = scenario.temperature_K;
+  if (L.has_load_body()) {
+    state[L.load_x] = x0;
+    state[L.load_v] = seg.v;
+  }
+  const auto init_z = [&](const FrictionModel& f, std::size_t z0, std::size_t nz, double gauge) {
+    if (nz == 0) return;
+    std::span<double> z(state.data() + z0, nz);
+    if (seg.v == 0.0) {
+      f.rest_state(z);
+    } else {
+      f.steady_state(FrictionInput{seg.v, gauge, x0}, z);
+    }
+  };
+  init_z(plant.seal_friction(), L.seal_z, L.seal_z_count, P1_0 + P2_0 - 2 * Pa);
+  if (plant.guide_friction()) init_z(*plant.guide_friction(), L.guide_z, L.guide_z_count, 0.0);
+
+  IntegratorOptions io;
+  io.t_start_s = 0.0;
+  io.t_end_s = static_cast<double>(seg.n - 1) / prep.rate_Hz;
+  io.relative_tolerance = o.relative_tolerance;
+  io.absolute_tolerance = o.absolute_tolerance;
+  io.max_step_s = scenario.run.max_step_s;
+  io.sample_rate_Hz = prep.rate_Hz;
+  io.record_events = false;
+  io.max_steps = static_cast<std::size_t>(std::max(1e5, 1e5 * io.t_end_s));
+  std::size_t count = 0;
+  const auto observer = [&](double, std::span<const double> s, const Mode&) {
+    if (count >= seg.n) return;
+    const std::size_t k = seg.k0 - base + count++;
+    P1[k] = s[L.P1];
+    P2[k] = s[L.P2];
+    v[k] = s[L.v];
+  };
+  Mode mode = plant.initial_mode(state, 0.0);
+  const IntegrationSummary summary = integrate_hybrid(plant, state, mode, io, observer);
+  if (!summary.ok()) {
+    if (why) *why = fmt::format("segment at t = {:.3f} s: {}", prep.record->t_s[seg.k0], summary.message);
+    return false;
+  }
+  // A run that ended early (end of stroke) holds its last state.
+  for (; count < seg.n && count > 0; ++count) {
+    const std::size_t k = seg.k0 - base + count;
+    P1[k] = P1[k - 1];
+    P2[k] = P2[k - 1];
+    v[k] = v[k - 1];
+  }
+  return true;
+}
+
+// Simulates every segment of `prep` with `scenario`, from the smoothed measured pressures or,
+// when given, from starts[2 i], starts[2 i + 1] (Pa) for segment i; writes P1, P2, v per
+// sample (the boundary sample of two segments holds the later segment's start). False when
+// the plant rejects the scenario or a segment's integration fails.
 bool simulate_segments(const Prepared& prep, const Scenario& scenario, const FitOptions& o,
                        std::vector<double>& P1, std::vector<double>& P2, std::vector<double>& v,
-                       std::string* why = nullptr) {
+                       std::string* why = nullptr, const std::vector<double>* starts = nullptr) {
   const std::size_t N = prep.record->size();
   P1.assign(N, 0.0);
   P2.assign(N, 0.0);
@@ -129,62 +195,12 @@ bool simulate_segments(const Prepared& prep, const Scenario& scenario, const Fit
     if (why) *why = e.what();
     return false;
   }
-  const StateLayout& L = plant->layout();
-  const double stroke = plant->geometry().stroke_m;
-  const double Pa = plant->ambient_pressure_Pa();
-  for (const auto& seg : prep.segments) {
-    std::vector<double> state(L.size, 0.0);
-    const double x0 = plant->geometry().volumes_frozen() ? seg.x : std::clamp(seg.x, 0.0, stroke * (1 - 1e-9));
-    state[L.x] = x0;
-    state[L.v] = seg.v;
-    state[L.P1] = seg.P1;
-    state[L.P2] = seg.P2;
-    if (L.has_temperatures()) state[L.T1] = state[L.T2] = scenario.temperature_K;
-    if (L.has_load_body()) {
-      state[L.load_x] = x0;
-      state[L.load_v] = seg.v;
-    }
-    const auto init_z = [&](const FrictionModel& f, std::size_t z0, std::size_t nz, double gauge) {
-      if (nz == 0) return;
-      std::span<double> z(state.data() + z0, nz);
-      if (seg.v == 0.0) {
-        f.rest_state(z);
-      } else {
-        f.steady_state(FrictionInput{seg.v, gauge, x0}, z);
-      }
-    };
-    init_z(plant->seal_friction(), L.seal_z, L.seal_z_count, seg.P1 + seg.P2 - 2 * Pa);
-    if (plant->guide_friction()) init_z(*plant->guide_friction(), L.guide_z, L.guide_z_count, 0.0);
-
-    IntegratorOptions io;
-    io.t_start_s = 0.0;
-    io.t_end_s = static_cast<double>(seg.n - 1) / prep.rate_Hz;
-    io.relative_tolerance = o.relative_tolerance;
-    io.absolute_tolerance = o.absolute_tolerance;
-    io.max_step_s = scenario.run.max_step_s;
-    io.sample_rate_Hz = prep.rate_Hz;
-    io.record_events = false;
-    io.max_steps = static_cast<std::size_t>(std::max(1e5, 1e5 * io.t_end_s));
-    std::size_t count = 0;
-    const auto observer = [&](double, std::span<const double> s, const Mode&) {
-      if (count >= seg.n) return;
-      const std::size_t k = seg.k0 + count++;
-      P1[k] = s[L.P1];
-      P2[k] = s[L.P2];
-      v[k] = s[L.v];
-    };
-    Mode mode = plant->initial_mode(state, 0.0);
-    const IntegrationSummary summary = integrate_hybrid(*plant, state, mode, io, observer);
-    if (!summary.ok()) {
-      if (why) *why = fmt::format("segment at t = {:.3f} s: {}", prep.record->t_s[seg.k0], summary.message);
+  for (std::size_t i = 0; i < prep.segments.size(); ++i) {
+    const auto& seg = prep.segments[i];
+    const double P1_0 = starts ? (*starts)[2 * i] : seg.P1;
+    const double P2_0 = starts ? (*starts)[2 * i + 1] : seg.P2;
+    if (!simulate_one(*plant, scenario, prep, seg, P1_0, P2_0, o, P1.data(), P2.data(), v.data(), why)) {
       return false;
-    }
-    // A run that ended early (end of stroke) holds its last state.
-    for (; count < seg.n && count > 0; ++count) {
-      const std::size_t k = seg.k0 + count;
-      P1[k] = P1[k - 1];
-      P2[k] = P2[k - 1];
-      v[k] = v[k - 1];
     }
   }
   return true;
@@ -236,6 +252,59 @@ class SegmentCost {
   mutable std::vector<double> P1_, P2_, v_;
 };
 
+// Multiple shooting proper: one residual block per segment, with the segment's starting
+// pressures as parameters of their own, p = kOffset + (P_0 - P_smoothed) / pressure scale.
+// The block's residuals are the samples the segment owns: its first up to the next segment's
+// first (the last segment: to the end).
+class SegmentBlockCost {
+ public:
+  SegmentBlockCost(const Prepared& prep, std::size_t i, const Scenario& start,
+                   const std::vector<FreeParam>& free, const FitOptions& o)
+      : prep_(prep), i_(i), start_(start), free_(free), o_(o) {
+    const auto& seg = prep.segments[i];
+    owned_ = i + 1 == prep.segments.size() ? seg.n : seg.n - 1;
+    P1_.resize(seg.n);
+    P2_.resize(seg.n);
+    v_.resize(seg.n);
+  }
+  [[nodiscard]] std::size_t owned() const { return owned_; }
+
+  bool operator()(double const* const* p, double* residuals) const {
+    std::optional<Plant> plant;
+    Scenario s;
+    try {
+      s = with_values(start_, free_, p[0]);
+      plant.emplace(s);
+    } catch (const Error&) {
+      return false;  // outside a key's range or rejected by the plant: a shorter step
+    }
+    const auto& seg = prep_.segments[i_];
+    const double P1_0 = seg.P1 + (p[1][0] - kOffset) * o_.pressure_scale_Pa;
+    const double P2_0 = seg.P2 + (p[1][1] - kOffset) * o_.pressure_scale_Pa;
+    if (!simulate_one(*plant, s, prep_, seg, P1_0, P2_0, o_, P1_.data(), P2_.data(), v_.data(),
+                      nullptr, seg.k0)) {
+      return false;
+    }
+    const MeasuredRecord& r = *prep_.record;
+    for (std::size_t j = 0; j < owned_; ++j) {
+      const std::size_t k = seg.k0 + j;
+      residuals[3 * j] = (P1_[j] - r.p1_Pa[k]) / o_.pressure_scale_Pa;
+      residuals[3 * j + 1] = (P2_[j] - r.p2_Pa[k]) / o_.pressure_scale_Pa;
+      residuals[3 * j + 2] = (v_[j] - r.v_m_per_s[k]) / o_.velocity_scale_m_per_s;
+    }
+    return true;
+  }
+
+ private:
+  const Prepared& prep_;
+  std::size_t i_;
+  const Scenario& start_;
+  const std::vector<FreeParam>& free_;
+  const FitOptions& o_;
+  std::size_t owned_ = 0;
+  mutable std::vector<double> P1_, P2_, v_;
+};
+
 class Progress : public ceres::IterationCallback {
  public:
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
@@ -252,10 +321,11 @@ double rms(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 ValidationSeries validation_of(const Prepared& prep, const Scenario& scenario,
-                               const FitOptions& o) {
+                               const FitOptions& o,
+                               const std::vector<double>* starts = nullptr) {
   ValidationSeries vs;
   std::string why;
-  if (!simulate_segments(prep, scenario, o, vs.p1_sim, vs.p2_sim, vs.v_sim, &why)) {
+  if (!simulate_segments(prep, scenario, o, vs.p1_sim, vs.p2_sim, vs.v_sim, &why, starts)) {
     throw RunError("fit", "the segment simulation failed: " + why);
   }
   const MeasuredRecord& r = *prep.record;
@@ -320,24 +390,41 @@ struct StageOutcome {
 
 StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
                          const std::vector<FreeParam>& free, const FitOptions& options,
-                         std::vector<double>& q, bool with_covariance) {
+                         std::vector<double>& q, bool with_covariance,
+                         std::vector<double>* starts = nullptr) {
   const int np = static_cast<int>(free.size());
   const int nr = static_cast<int>(3 * prep.record->size());
   ceres::NumericDiffOptions nd;
   nd.relative_step_size = options.difference_step / kOffset;
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<SegmentCost, ceres::CENTRAL>(
-      new SegmentCost(prep, start, free, options), ceres::TAKE_OWNERSHIP, nd);
-  cost->AddParameterBlock(np);
-  cost->SetNumResiduals(nr);
   ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, q.data());
+  // The segments' starting pressures (multiple shooting), one block of two per segment.
+  std::vector<std::array<double, 2>> state(prep.segments.size(), {kOffset, kOffset});
+  if (options.fit_start_pressures) {
+    for (std::size_t i = 0; i < prep.segments.size(); ++i) {
+      auto* functor = new SegmentBlockCost(prep, i, start, free, options);
+      const auto owned = static_cast<int>(functor->owned());
+      auto* cost = new ceres::DynamicNumericDiffCostFunction<SegmentBlockCost, ceres::CENTRAL>(
+          functor, ceres::TAKE_OWNERSHIP, nd);
+      cost->AddParameterBlock(np);
+      cost->AddParameterBlock(2);
+      cost->SetNumResiduals(3 * owned);
+      problem.AddResidualBlock(cost, nullptr, q.data(), state[i].data());
+    }
+  } else {
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<SegmentCost, ceres::CENTRAL>(
+        new SegmentCost(prep, start, free, options), ceres::TAKE_OWNERSHIP, nd);
+    cost->AddParameterBlock(np);
+    cost->SetNumResiduals(nr);
+    problem.AddResidualBlock(cost, nullptr, q.data());
+  }
   const double span = std::log(options.max_factor);
   for (int j = 0; j < np; ++j) {
     problem.SetParameterLowerBound(q.data(), j, kOffset - span);
     problem.SetParameterUpperBound(q.data(), j, kOffset + span);
   }
   ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
+  // With the starting pressures free, the Schur complement eliminates them segment by segment.
+  so.linear_solver_type = options.fit_start_pressures ? ceres::DENSE_SCHUR : ceres::DENSE_QR;
   so.max_num_iterations = options.max_iterations;
   so.function_tolerance = options.function_tolerance;
   so.parameter_tolerance = options.parameter_tolerance;
@@ -352,6 +439,13 @@ StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
     throw RunError("fit", fmt::format(
         "the fit did not converge with {:g} s segments ({}): {}", options.segment_length_s,
         ceres::TerminationTypeToString(summary.termination_type), summary.message));
+  }
+  if (starts) {
+    starts->resize(2 * prep.segments.size());
+    for (std::size_t i = 0; i < prep.segments.size(); ++i) {
+      (*starts)[2 * i] = prep.segments[i].P1 + (state[i][0] - kOffset) * options.pressure_scale_Pa;
+      (*starts)[2 * i + 1] = prep.segments[i].P2 + (state[i][1] - kOffset) * options.pressure_scale_Pa;
+    }
   }
   if (!with_covariance) return out;
   ceres::Covariance::Options co;
@@ -436,7 +530,8 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
       result.chosen_candidate = static_cast<int>(result.candidate_costs.size()) - 1;
     }
   }
-  const StageOutcome outcome = solve_stage(final_prep, start, free, options, q, true);
+  std::vector<double> starts;
+  const StageOutcome outcome = solve_stage(final_prep, start, free, options, q, true, &starts);
   result.iterations += static_cast<int>(outcome.summary.iterations.size());
   const ceres::Solver::Summary& summary = outcome.summary;
   const int nr = static_cast<int>(3 * record.size());
@@ -446,7 +541,8 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
   result.segments = final_prep.segments.size();
   result.residuals = static_cast<std::size_t>(nr);
   result.final_cost = summary.final_cost;
-  result.reduced_chi2 = 2.0 * summary.final_cost / std::max(1, nr - np);
+  const int fitted = np + (options.fit_start_pressures ? 2 * static_cast<int>(final_prep.segments.size()) : 0);
+  result.reduced_chi2 = 2.0 * summary.final_cost / std::max(1, nr - fitted);
   result.summary = summary.BriefReport();
   for (int j = 0; j < np; ++j) {
     FittedParameter p;
@@ -458,7 +554,8 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
     p.standard_error = p.value * std::sqrt(std::max(0.0, var_log));
     result.parameters.push_back(p);
   }
-  result.validation = validation_of(final_prep, result.scenario, options);
+  result.validation = validation_of(final_prep, result.scenario, options,
+                                    options.fit_start_pressures ? &starts : nullptr);
   const ValidationSeries& vs = result.validation;
   result.rms_P1_Pa = rms(vs.p1_sim, vs.p1_meas);
   result.rms_P2_Pa = rms(vs.p2_sim, vs.p2_meas);

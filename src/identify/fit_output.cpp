@@ -46,6 +46,7 @@ std::string fit_json(const FitResult& r, const FitOptions& o, const MeasuredReco
                  {"pressure_scale_Pa", o.pressure_scale_Pa},
                  {"velocity_scale_m_per_s", o.velocity_scale_m_per_s},
                  {"difference_step_log", o.difference_step},
+                 {"fit_start_pressures", o.fit_start_pressures},
                  {"candidates", candidates},
                  {"chosen_candidate", r.chosen_candidate}};
   j["cost"] = {{"initial", number(r.initial_cost)}, {"final", number(r.final_cost)}};

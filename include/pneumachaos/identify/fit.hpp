@@ -16,7 +16,7 @@ namespace pneumachaos::identify {
 struct FitOptions {
   /// Length of each simulated segment (multiple shooting): every segment starts from the
   /// measured state, so a chaotic or stick-slip record never has to be followed longer.
-  double segment_length_s = 0.05;
+  double segment_length_s = 0.2;
   /// Global stage: from the start values, one fit with each of these segment lengths and one
   /// with segment_length_s; the candidate whose simulation error is least with
   /// segment_length_s segments (the start values included) starts the final fit. Short
@@ -29,6 +29,10 @@ struct FitOptions {
   /// the slip timing drowns the pressure signals that carry S2 (docs/fit.md).
   double pressure_scale_Pa = 1000.0;
   double velocity_scale_m_per_s = 0.03;
+  /// Multiple shooting proper: each segment's starting P1, P2 are fitted too (two parameters
+  /// per segment, eliminated by the Schur complement), so transducer noise in the starting
+  /// values does not bias the valve areas. Off: the smoothed measured values are used as they are.
+  bool fit_start_pressures = true;
   /// Samples (each side) of the local straight-line fit that gives a segment's initial
   /// P1, P2, v from the noisy record.
   std::size_t start_half_window = 5;
