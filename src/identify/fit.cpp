@@ -454,12 +454,7 @@ StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
   co.num_threads = 1;
   ceres::Covariance covariance(co);
   std::vector<std::pair<const double*, const double*>> blocks{{q.data(), q.data()}};
-  // Ceres logs a rank deficiency through glog as well; the RunError below says it.
-  const int log_level = FLAGS_minloglevel;
-  FLAGS_minloglevel = google::GLOG_FATAL;
-  const bool computed = covariance.Compute(blocks, &problem);
-  FLAGS_minloglevel = log_level;
-  if (!computed) {
+  if (!covariance.Compute(blocks, &problem)) {
     throw RunError("fit", fmt::format(
         "the fit's covariance is rank-deficient: the record does not determine all of the "
         "free parameters (fix some with --set and drop them from --free); Ceres: {}",
@@ -474,6 +469,13 @@ StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
 
 FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
                     const std::vector<std::string>& free_keys, const FitOptions& options) {
+  // Ceres reports failed evaluations and rank deficiency through glog too; the RunErrors
+  // and the result say it, so glog stays quiet while fitting.
+  struct QuietGlog {
+    int level = FLAGS_minloglevel;
+    QuietGlog() { FLAGS_minloglevel = google::GLOG_FATAL; }
+    ~QuietGlog() { FLAGS_minloglevel = level; }
+  } quiet;
   const auto t0 = std::chrono::steady_clock::now();
   check_free_keys(start, free_keys);
   start.validate();
