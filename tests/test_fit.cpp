@@ -5,12 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
 #include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
@@ -147,6 +150,33 @@ TEST(Fit, ParameterTheRecordDoesNotSeeIsRankDeficient) {
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("rank-deficient"), std::string::npos) << e.what();
   }
+}
+
+TEST(Fit, JsonAndValidationCsvHoldEveryValueWithItsUnit) {
+  const Scenario truth = rig("classic", 2.70, 0.35);
+  const MeasuredRecord record = synthetic_record(truth, 2.0, RigDegradation{}, 15);
+  const Scenario start = off_start(truth, 1.2, 0.8, 1.0, 1.0);
+  FitOptions o;
+  o.first_segment_lengths_s.clear();
+  const FitResult r = fit_model(record, start, {"circuit.S1_mm2", "circuit.S2_mm2"}, o);
+  const auto j = nlohmann::json::parse(fit_json(r, o, record));
+  for (const char* key : {"circuit.S1_mm2", "circuit.S2_mm2"}) {
+    const auto& p = j.at("parameters").at(key);
+    EXPECT_TRUE(p.at("value").is_number()) << key;
+    EXPECT_TRUE(p.at("stderr").is_number()) << key;
+    EXPECT_EQ(p.at("unit"), "mm^2") << key;
+    EXPECT_TRUE(p.at("start").is_number()) << key;
+  }
+  EXPECT_EQ(j.at("free").size(), 2U);
+  EXPECT_EQ(j.at("rms").at("P1").at("unit"), "Pa");
+  EXPECT_EQ(j.at("rms").at("v").at("unit"), "m/s");
+  EXPECT_EQ(j.at("converged"), true);
+  EXPECT_EQ(j.at("record").at("samples"), record.size());
+  EXPECT_EQ(j.at("method").at("segments"), r.segments);
+  const std::string csv = validation_csv(r.validation);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "t[s],v_meas[m/s],v_sim[m/s],P1_meas[Pa],P1_sim[Pa],P2_meas[Pa],P2_sim[Pa],segment[-]");
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), record.size() + 1);
 }
 
 }  // namespace
