@@ -129,7 +129,14 @@ bool simulate_one(const Plant& plant, const Scenario& scenario, const Prepared& 
   state[L.P2] = P2_0;
   if (L.has_temperatures()) state[L.T1] = state[L.T2] = scenario.temperature_K;
   if (L.has_load_body()) {
-    state[L.load_x] = x0;
+    // The load rides with the piston, its spring deflected by what holds it back: the guide's
+    // steady friction at this velocity (none at rest) and the external force.
+    double F_guide = 0.0;
+    if (seg.v != 0.0 && plant.guide_friction()) {
+      F_guide = plant.guide_friction()->steady_force_N(FrictionInput{seg.v, 0.0, x0});
+    }
+    state[L.load_x] = x0 - (F_guide + plant.load().external_force_N) /
+                               plant.load().coupling_stiffness_N_per_m;
     state[L.load_v] = seg.v;
   }
   const auto init_z = [&](const FrictionModel& f, std::size_t z0, std::size_t nz, double gauge) {
