@@ -11,7 +11,8 @@ const FlagNames& common_flag_names() {
                                {"sampling rate", "--rate"},
                                {"model exponent transient", "--model-transient"},
                                {"model exponent measure", "--model-measure"},
-                               {"model exponent renormalize", "--model-renormalize"}};
+                               {"model exponent renormalize", "--model-renormalize"},
+                               {"free parameter", "--free"}};
   return names;
 }
 

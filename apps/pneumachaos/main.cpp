@@ -35,6 +35,7 @@ int run(int argc, char** argv) {
   add(pneumachaos::cli::add_lyapunov);
   add(pneumachaos::cli::add_reproduce);
   add(pneumachaos::cli::add_friction);
+  add(pneumachaos::cli::add_fit);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
