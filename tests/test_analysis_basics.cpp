@@ -9,6 +9,8 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/delay_embedding.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/spectral_lines.hpp"
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "reference_series.hpp"
@@ -175,6 +177,33 @@ TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
   const DelayChoice d = choose_delay(x);
   EXPECT_GE(d.delay, 22u);
   EXPECT_LE(d.delay, 28u);
+}
+
+// A 6.25 Hz orbit at 1 kHz (160 samples) carrying its 4th harmonic at 0.6 of its amplitude,
+// like the rig's piston on its mount (docs/analysis.md "Orbital period"): every swing of the
+// harmonic is a maximum, so the maxima are 40 samples apart; the state repeats after 160.
+TEST(OrbitalPeriod, SeesThroughAStrongHarmonic) {
+  const auto slow = sine(10000, 6.25, 1000.0, 0.02, 3);
+  const auto fast = sine(10000, 25.0, 1000.0);
+  std::vector<double> x(slow.size());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = slow[i] + 0.6 * fast[i];
+  const double maxima = mean_maxima_spacing(x);
+  EXPECT_NEAR(maxima, 40.0, 2.0);
+  EXPECT_NEAR(orbital_period(maxima, spectral_lines(x), x.size()), 160.0, 1.6);
+}
+
+// Without a harmonic the maxima spacing stands: a noisy sine, a torus (incommensurate second
+// line), Lorenz x (its strongest line is the slow lobe switching, no fundamental of the
+// orbit) and Rossler x.
+TEST(OrbitalPeriod, KeepsTheMaximaSpacingWithoutAHarmonic) {
+  const auto a = sine(10000, 10.0, 1000.0, 0.05);
+  const auto b = sine(10000, 10.0 * (1.0 + std::sqrt(5.0)) / 2.0, 1000.0);
+  std::vector<double> torus(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) torus[i] = a[i] + 0.6 * b[i];
+  for (const auto& x : {a, torus, lorenz_x(10000), rossler_x(10000)}) {
+    const double maxima = mean_maxima_spacing(x);
+    EXPECT_EQ(orbital_period(maxima, spectral_lines(x), x.size()), maxima);
+  }
 }
 
 }  // namespace

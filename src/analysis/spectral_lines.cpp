@@ -56,6 +56,12 @@ bool rational(double b1, double b2) {
   return false;
 }
 
+// b2 / b1 near an integer q >= 2, with rational()'s tolerance.
+bool harmonic(double b1, double b2) {
+  const double q = std::round(b2 / b1);
+  return q >= 2.0 && std::abs(b2 - q * b1) <= 1.0 + 0.5 * q;
+}
+
 }  // namespace
 
 SpectralLines spectral_lines(std::span<const double> x) {
@@ -79,6 +85,22 @@ SpectralLines spectral_lines(std::span<const double> x) {
   s.second_power = lobe_power(p, k2) / lobe_power(p, k1);
   s.incommensurate = !rational(b1, b2);
   return s;
+}
+
+double orbital_period(double maxima_spacing, const SpectralLines& lines, std::size_t samples) {
+  if (!(lines.second_frequency > 0.0) || samples < 16) return maxima_spacing;
+  const double bins = static_cast<double>(fast_fft_size(samples));
+  const double slow = std::min(lines.first_frequency, lines.second_frequency) * bins;
+  const double fast = std::max(lines.first_frequency, lines.second_frequency) * bins;
+  // The multiple is identifiable only when the tolerance is below half the slow line's
+  // frequency (neighbouring multiples are then told apart); a slow "line" a few bins from DC
+  // (Lorenz x's lobe switching) is no fundamental.
+  const double q = std::round(fast / slow);
+  if (!harmonic(slow, fast) || 1.0 + 0.5 * q >= 0.5 * slow) return maxima_spacing;
+  // The maxima follow the harmonic when their rate is the faster line's.
+  const double mismatch = std::abs(maxima_spacing * fast / bins - 1.0);
+  if (mismatch > 0.1) return maxima_spacing;
+  return bins / slow;
 }
 
 }  // namespace pneumachaos
