@@ -214,9 +214,8 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
-  r.lines = spectral_lines(x);
   r.maxima_spacing_samples = mean_maxima_spacing(x);
-  r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
+  r.period_samples = r.maxima_spacing_samples;
   r.spectrum = welch_spectrum(x, rate_Hz, o.spectrum);
   r.acf = autocorrelation(x, rate_Hz);
   e.broadband_share = r.spectrum.broadband_share;
@@ -226,6 +225,9 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
+  // The spectral lines before the exponents: they tell whether the maxima follow a harmonic.
+  r.lines = spectral_lines(x);
+  r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
   choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
   run_exponents(x, rate_Hz, o, r);
