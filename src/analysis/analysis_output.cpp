@@ -98,7 +98,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
     out += fmt::format("orbital period: {:.4g} s (maxima spacing {:.4g} s{})\n",
                        r.period_samples / r.rate_Hz, r.maxima_spacing_samples / r.rate_Hz,
                        r.period_samples != r.maxima_spacing_samples
-                           ? "; the maxima follow a harmonic, the period is its fundamental's"
+                           ? "; the maxima follow a faster mode, the period is the slower line's"
                            : "");
     out += fmt::format("maximum Lyapunov exponent (1/s = nats/s):\n");
     if (r.divergence.found_linear_region) {

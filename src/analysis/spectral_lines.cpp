@@ -56,12 +56,6 @@ bool rational(double b1, double b2) {
   return false;
 }
 
-// b2 / b1 near an integer q >= 2, with rational()'s tolerance.
-bool harmonic(double b1, double b2) {
-  const double q = std::round(b2 / b1);
-  return q >= 2.0 && std::abs(b2 - q * b1) <= 1.0 + 0.5 * q;
-}
-
 }  // namespace
 
 SpectralLines spectral_lines(std::span<const double> x) {
@@ -92,15 +86,16 @@ double orbital_period(double maxima_spacing, const SpectralLines& lines, std::si
   const double bins = static_cast<double>(fast_fft_size(samples));
   const double slow = std::min(lines.first_frequency, lines.second_frequency) * bins;
   const double fast = std::max(lines.first_frequency, lines.second_frequency) * bins;
-  // The multiple is identifiable only when the tolerance is below half the slow line's
-  // frequency (neighbouring multiples are then told apart); a slow "line" a few bins from DC
-  // (Lorenz x's lobe switching) is no fundamental.
+  // A faster mode: at least about twice the slower line's frequency, and the slower line
+  // resolved well enough to tell that multiple from the next (the tolerance rational() grants
+  // a ratio near q, a bin plus half a bin per unit of q, below half the slower line's bin);
+  // a slow "line" a few bins from DC (Lorenz x's lobe switching) is no orbit.
   const double q = std::round(fast / slow);
-  if (!harmonic(slow, fast) || 1.0 + 0.5 * q >= 0.5 * slow) return maxima_spacing;
-  // The maxima follow the harmonic when their rate is the faster line's.
+  if (q < 2.0 || 1.0 + 0.5 * q >= 0.5 * slow) return maxima_spacing;
+  // The maxima follow the faster mode when their rate is its frequency (the faster mode's
+  // swings each make a maximum); the state repeats only after the slower line's period.
   const double mismatch = std::abs(maxima_spacing * fast / bins - 1.0);
-  if (mismatch > 0.1) return maxima_spacing;
-  return bins / slow;
+  return mismatch <= 0.1 ? bins / slow : maxima_spacing;
 }
 
 }  // namespace pneumachaos
