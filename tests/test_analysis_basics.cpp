@@ -9,6 +9,8 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/delay_embedding.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/spectral_lines.hpp"
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "reference_series.hpp"
@@ -175,6 +177,36 @@ TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
   const DelayChoice d = choose_delay(x);
   EXPECT_GE(d.delay, 22u);
   EXPECT_LE(d.delay, 28u);
+}
+
+// A 6.25 Hz orbit at 1 kHz (160 samples) carrying a faster mode at 0.6 of its amplitude, like
+// the rig's piston on its mount (docs/analysis.md "Orbital period"): every swing of the faster
+// mode is a maximum, so the maxima are 40 (its 4th harmonic) or 43.5 samples (23 Hz, not
+// locked) apart; the orbit takes 160.
+TEST(OrbitalPeriod, SeesThroughAFasterMode) {
+  const auto slow = sine(10000, 6.25, 1000.0, 0.02, 3);
+  for (const double f : {25.0, 23.0}) {
+    const auto fast = sine(10000, f, 1000.0);
+    std::vector<double> x(slow.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = slow[i] + 0.6 * fast[i];
+    const double maxima = mean_maxima_spacing(x);
+    EXPECT_NEAR(maxima, 1000.0 / f, 2.0) << f;
+    EXPECT_NEAR(orbital_period(maxima, spectral_lines(x), x.size()), 160.0, 1.6) << f;
+  }
+}
+
+// Otherwise the maxima spacing stands: a noisy sine (one line), a golden-ratio torus (its
+// maxima follow neither line alone), Lorenz x (its strongest lines are the slow lobe
+// switching, far from the maxima's rate) and Rossler x.
+TEST(OrbitalPeriod, KeepsTheMaximaSpacingWithoutAFasterMode) {
+  const auto a = sine(10000, 10.0, 1000.0, 0.05);
+  const auto b = sine(10000, 10.0 * (1.0 + std::sqrt(5.0)) / 2.0, 1000.0);
+  std::vector<double> torus(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) torus[i] = a[i] + 0.6 * b[i];
+  for (const auto& x : {a, torus, lorenz_x(10000), rossler_x(10000)}) {
+    const double maxima = mean_maxima_spacing(x);
+    EXPECT_EQ(orbital_period(maxima, spectral_lines(x), x.size()), maxima);
+  }
 }
 
 }  // namespace

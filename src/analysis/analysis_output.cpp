@@ -95,6 +95,11 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
     out += fmt::format(
         "embedding: delay {} samples ({:.4g} s, {}), dimension {} (Cao), Theiler {} samples\n",
         r.delay.delay, r.delay.delay / r.rate_Hz, r.delay.method, r.dimension.dimension, r.theiler);
+    out += fmt::format("orbital period: {:.4g} s (maxima spacing {:.4g} s{})\n",
+                       r.period_samples / r.rate_Hz, r.maxima_spacing_samples / r.rate_Hz,
+                       r.period_samples != r.maxima_spacing_samples
+                           ? "; the maxima follow a faster mode, the period is the slower line's"
+                           : "");
     out += fmt::format("maximum Lyapunov exponent (1/s = nats/s):\n");
     if (r.divergence.found_linear_region) {
       out += fmt::format(
@@ -149,7 +154,8 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                     {"theiler_samples", r.theiler},
                     {"cao_E1", r.dimension.E1},
                     {"cao_E2", r.dimension.E2},
-                    {"period", quantity(r.period_samples / r.rate_Hz, "s")}};
+                    {"period", quantity(r.period_samples / r.rate_Hz, "s")},
+                    {"maxima_spacing", quantity(r.maxima_spacing_samples / r.rate_Hz, "s")}};
   j["lyapunov"]["divergence"] = {
       {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
       {"uncertainty", number(r.divergence.uncertainty_per_s)},

@@ -110,8 +110,7 @@ void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions
                         "strictly periodic record); 0 is reported";
 }
 
-void note_lines(std::span<const double> x, AnalysisResult& r) {
-  r.lines = spectral_lines(x);
+void note_lines(AnalysisResult& r) {
   r.evidence.second_line_power = r.lines.second_power;
   r.evidence.second_line_ratio =
       r.lines.first_frequency > 0 ? r.lines.second_frequency / r.lines.first_frequency : 0.0;
@@ -184,6 +183,10 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   d.delay = r.delay.delay;
   d.theiler = r.theiler;
   d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  // The slope spacing stays at half the maxima spacing: the curve carries the fastest
+  // oscillation the maxima follow, and a linear region can be shorter than one orbit.
+  d.slope_spacing =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
   r.divergence = divergence_exponent(x, rate_Hz, d);
   r.divergence_status =
       r.divergence.found_linear_region
@@ -211,7 +214,8 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
-  r.period_samples = mean_maxima_spacing(x);
+  r.maxima_spacing_samples = mean_maxima_spacing(x);
+  r.period_samples = r.maxima_spacing_samples;
   r.spectrum = welch_spectrum(x, rate_Hz, o.spectrum);
   r.acf = autocorrelation(x, rate_Hz);
   e.broadband_share = r.spectrum.broadband_share;
@@ -221,13 +225,16 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
+  // The spectral lines before the exponents: they tell whether the maxima follow a harmonic.
+  r.lines = spectral_lines(x);
+  r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
   choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
   run_exponents(x, rate_Hz, o, r);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
-  note_lines(x, r);
+  note_lines(r);
   r.verdict = decide_regime(e, o.verdict);
   return r;
 }

@@ -81,4 +81,21 @@ SpectralLines spectral_lines(std::span<const double> x) {
   return s;
 }
 
+double orbital_period(double maxima_spacing, const SpectralLines& lines, std::size_t samples) {
+  if (!(lines.second_frequency > 0.0) || samples < 16) return maxima_spacing;
+  const double bins = static_cast<double>(fast_fft_size(samples));
+  const double slow = std::min(lines.first_frequency, lines.second_frequency) * bins;
+  const double fast = std::max(lines.first_frequency, lines.second_frequency) * bins;
+  // A faster mode: at least about twice the slower line's frequency, and the slower line
+  // resolved well enough to tell that multiple from the next (the tolerance rational() grants
+  // a ratio near q, a bin plus half a bin per unit of q, below half the slower line's bin);
+  // a slow "line" a few bins from DC (Lorenz x's lobe switching) is no orbit.
+  const double q = std::round(fast / slow);
+  if (q < 2.0 || 1.0 + 0.5 * q >= 0.5 * slow) return maxima_spacing;
+  // The maxima follow the faster mode when their rate is its frequency (the faster mode's
+  // swings each make a maximum); the state repeats only after the slower line's period.
+  const double mismatch = std::abs(maxima_spacing * fast / bins - 1.0);
+  return mismatch <= 0.1 ? bins / slow : maxima_spacing;
+}
+
 }  // namespace pneumachaos

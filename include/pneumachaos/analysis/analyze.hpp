@@ -43,7 +43,10 @@ struct AnalysisResult {
   std::size_t samples = 0;
   double rate_Hz = 0.0;
   double mean = 0.0, standard_deviation = 0.0;
-  double period_samples = 0.0;  ///< mean spacing of maxima
+  double maxima_spacing_samples = 0.0;  ///< mean spacing of maxima
+  /// Orbital period: the maxima spacing, or the fundamental's period when the maxima follow
+  /// a harmonic (orbital_period, docs/analysis.md "Orbital period").
+  double period_samples = 0.0;
   Spectrum spectrum;
   Autocorrelation acf;
   DelayChoice delay;
