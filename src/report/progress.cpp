@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
+
 namespace pneumachaos {
 
 ReproduceProgress::ReproduceProgress(bool show, int stages, std::size_t total_runs)
@@ -31,17 +33,24 @@ void ReproduceProgress::stage(const std::string& what) {
 void ReproduceProgress::runs_done(std::size_t runs) {
   std::lock_guard<std::mutex> lock(m_);
   runs_ += runs;
+  current_ = 0;
+}
+
+void ReproduceProgress::sweep_runs(std::size_t done_in_sweep) {
+  std::lock_guard<std::mutex> lock(m_);
+  current_ = done_in_sweep;
 }
 
 std::string ReproduceProgress::line_locked() const {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   // The sweeps dominate the time: extrapolate from the runs finished so far.
+  const std::size_t done = std::min(total_runs_, runs_ + current_);
   const std::string eta =
-      runs_ == 0 ? "ETA unknown"
-                 : fmt::format("ETA {:.0f} s", elapsed * (total_runs_ - runs_) / runs_);
+      done == 0 ? "ETA unknown"
+                : fmt::format("ETA {:.0f} s", elapsed * double(total_runs_ - done) / double(done));
   return fmt::format("reproduce: stage {}/{} ({}), {} of {} sweep runs done, {:.0f} s elapsed, {}",
-                     done_, stages_, what_, runs_, total_runs_, elapsed, eta);
+                     done_, stages_, what_, done, total_runs_, elapsed, eta);
 }
 
 // One line every 10 s, never more often: a log gets a heartbeat, not a flood.

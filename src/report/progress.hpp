@@ -22,6 +22,8 @@ class ReproduceProgress {
 
   void stage(const std::string& what);
   void runs_done(std::size_t runs);  ///< add the runs of a finished sweep
+  /// The runs of the sweep under way finished so far (the sweep's progress callback).
+  void sweep_runs(std::size_t done_in_sweep);
 
  private:
   void tick();
@@ -29,7 +31,7 @@ class ReproduceProgress {
 
   bool terminal_ = false, plain_ = false;
   int stages_, done_ = 0;
-  std::size_t total_runs_, runs_ = 0;
+  std::size_t total_runs_, runs_ = 0, current_ = 0;
   std::string what_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::mutex m_;

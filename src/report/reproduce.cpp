@@ -256,6 +256,7 @@ class ReportBuilder {
       so.out_dir = o_.out_dir + "/sweeps/" + c.name.substr(c.name.find("map_") + 4);
       so.threads = o_.threads;
       so.progress = o_.progress;
+      so.on_progress = [this](std::size_t done, std::size_t) { stage_.sweep_runs(done); };
       // A second run of reproduce resumes (or re-reads) the sweeps of the first.
       so.resume = true;
       maps_.push_back(run_sweep(s, so));
