@@ -50,11 +50,7 @@ Action add_fit(CLI::App& app) {
   cmd->add_option("--plot-out", args->plot_out,
                   "directory for the validation series (measured vs simulated CSV), its gnuplot "
                   "scripts and figure");
-  cmd->add_option("--column-t", args->columns.t, "name of the time column (default t)");
-  cmd->add_option("--column-v", args->columns.v, "name of the velocity column (default v)");
-  cmd->add_option("--column-P1", args->columns.P1, "name of the head-side pressure column (default P1)");
-  cmd->add_option("--column-P2", args->columns.P2, "name of the rod-side pressure column (default P2)");
-  cmd->add_option("--column-x", args->columns.x, "name of the position column (default x; optional)");
+  add_record_column_options(cmd, args->columns);
   cmd->add_option("--segment", args->segment_s, "segment length [s] of the final fit (default 0.2)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--pressure-scale", args->pressure_scale_Pa,
@@ -73,11 +69,8 @@ Action add_fit(CLI::App& app) {
     const std::vector<std::string> free =
         args->free.empty() ? identify::default_free_keys(start) : args->free;
     identify::check_free_keys(start, free);  // before reading: a bad key is exit 2 at once
-    identify::RecordReadOptions read;
-    read.ambient_Pa = start.ambient_pressure_Pa;
-    read.stroke_m = start.cylinder.stroke_m;
-    const identify::MeasuredRecord record =
-        identify::read_measured_record(args->record, args->columns, read);
+    const identify::MeasuredRecord record = identify::read_measured_record(
+        args->record, args->columns, identify::read_options_for(start));
     identify::FitOptions options;
     if (args->segment_s) options.segment_length_s = *args->segment_s;
     if (args->pressure_scale_Pa) options.pressure_scale_Pa = *args->pressure_scale_Pa;

@@ -57,11 +57,7 @@ Action add_friction(CLI::App& app) {
                   "iterations allowed to each fit (default 200); a fit that has not converged "
                   "by then fails the command (exit 3)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--column-v", args->columns.v, "header name of the velocity column (default v)");
-  cmd->add_option("--column-P1", args->columns.P1, "header name of chamber 1's pressure (default P1)");
-  cmd->add_option("--column-P2", args->columns.P2, "header name of chamber 2's pressure (default P2)");
-  cmd->add_option("--column-x", args->columns.x, "header name of the position column (default x)");
-  cmd->add_option("--column-a", args->columns.a, "header name of an acceleration column (default a)");
+  add_record_column_options(cmd, args->columns);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     identify::FrictionFitOptions fit;
@@ -83,12 +79,8 @@ Action add_friction(CLI::App& app) {
         throw Error("--window", fmt::format("expected an odd number of samples >= 3, got {}", *args->window));
       settings.sg_half_width = static_cast<std::size_t>(*args->window / 2);
     }
-    identify::RecordReadOptions read;
-    read.ambient_Pa = scenario.ambient_pressure_Pa;
-    // Frozen chamber volumes (a virtual rig's long record) let a simulation travel beyond the
-    // stroke; a real record cannot.
-    if (!scenario.cylinder.volumes_frozen()) read.stroke_m = scenario.cylinder.stroke_m;
-    const identify::MeasuredRecord record = identify::read_measured_record(args->file, args->columns, read);
+    const identify::MeasuredRecord record = identify::read_measured_record(
+        args->file, args->columns, identify::read_options_for(scenario));
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
     const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
     fmt::print("{}", identify::friction_summary(estimate, fits));

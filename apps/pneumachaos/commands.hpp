@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/identify/measured_record_csv.hpp"
+
 namespace pneumachaos::cli {
 
 /// The action returns the process exit code.
@@ -19,6 +21,9 @@ struct ScenarioArgs {
   std::vector<std::string> sets;
 };
 void add_scenario_options(CLI::App* cmd, ScenarioArgs& args);
+
+/// --column-t/-v/-P1/-P2/-x/-a: the header names of a measured record's columns.
+void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns);
 
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);

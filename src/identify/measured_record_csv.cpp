@@ -275,6 +275,13 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
   return r;
 }
 
+RecordReadOptions read_options_for(const Scenario& scenario) {
+  RecordReadOptions read;
+  read.ambient_Pa = scenario.ambient_pressure_Pa;
+  if (!scenario.cylinder.volumes_frozen()) read.stroke_m = scenario.cylinder.stroke_m;
+  return read;
+}
+
 MeasuredRecord read_measured_record(const std::string& path, const RecordColumns& names,
                                     const RecordReadOptions& options) {
   std::ostringstream text;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "pneumachaos/identify/measured_record.hpp"
+#include "pneumachaos/model/scenario.hpp"
 
 namespace pneumachaos::identify {
 
@@ -46,6 +47,11 @@ struct RecordReadOptions {
 /// a finite number, a row with the wrong number of fields, an absolute pressure below 0 or
 /// above 10 MPa, non-increasing or non-uniform time, a velocity implausibly large for the
 /// stroke, fewer than 100 samples. Path "-" reads standard input.
+/// The reading options a scenario implies: its ambient pressure for gauge columns and its
+/// stroke for the travel check (none when the scenario freezes its chamber volumes: a virtual
+/// rig's long record may travel beyond the stroke, a real one cannot).
+RecordReadOptions read_options_for(const Scenario& scenario);
+
 MeasuredRecord read_measured_record(const std::string& path, const RecordColumns& names,
                                     const RecordReadOptions& options = {});
 
