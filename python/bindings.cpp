@@ -13,6 +13,10 @@
 
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/identify/fit.hpp"
+#include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/identify/friction_fits.hpp"
+#include "pneumachaos/identify/friction_output.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
@@ -40,21 +44,61 @@ py::array_t<double> copy_to_numpy(const std::vector<double>& v) {
   return to_numpy(std::vector<double>(v));
 }
 
-// A 1-D float array from Python, checked as the CLI checks a record.
-std::vector<double> series_from(const py::array& in) {
+// A 1-D float array from Python, checked as the CLI checks a record; `name` is the argument.
+std::vector<double> series_from(const py::array& in, const std::string& name = "x") {
   if (in.ndim() != 1) {
-    throw Error("x", "expected a 1-D array of samples, got " + std::to_string(in.ndim()) +
-                         " dimensions");
+    throw Error(name, "expected a 1-D array of samples, got " + std::to_string(in.ndim()) +
+                          " dimensions");
   }
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(in);
-  if (!a) throw Error("x", "expected an array of numbers");
+  if (!a) throw Error(name, "expected an array of numbers");
   std::vector<double> x(a.data(), a.data() + a.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) {
-      throw Error("x", "sample " + std::to_string(i) + " is not a finite number");
+      throw Error(name, "sample " + std::to_string(i) + " is not a finite number");
     }
   }
   return x;
+}
+
+// A measured record (t [s], v [m/s], P1, P2 [Pa absolute]) from four arrays.
+identify::MeasuredRecord record_from(const py::array& t, const py::array& v, const py::array& p1,
+                                     const py::array& p2) {
+  return identify::record_from_columns(series_from(t, "t"), series_from(v, "v"),
+                                       series_from(p1, "P1"), series_from(p2, "P2"), {},
+                                       "<arrays>");
+}
+
+// `pneumachaos friction` on arrays: the same estimate, fits and JSON.
+std::string friction_py(const py::array& t, const py::array& v, const py::array& p1,
+                        const py::array& p2, const Scenario& scenario,
+                        const std::vector<std::string>& models, bool pressure_dependent) {
+  const identify::MeasuredRecord record = record_from(t, v, p1, p2);
+  identify::FrictionFitOptions fit;
+  if (!models.empty()) fit.models.clear();
+  for (const auto& m : models) fit.models.push_back(identify::parse_fit_model(m, "models"));
+  fit.pressure_dependent = pressure_dependent;
+  fit.fixed_exponent = scenario.friction.stribeck_exponent;
+  fit.start = scenario.friction;
+  const identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  py::gil_scoped_release release;
+  const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
+  const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
+  if (const auto* failed = fits.failed())
+    throw RunError("friction fit " + failed->name, "did not converge (" + failed->summary + ")");
+  return identify::friction_json(estimate, fits, settings, record.source);
+}
+
+// `pneumachaos fit` on arrays: the free keys identified, as its JSON.
+std::string fit_py(const py::array& t, const py::array& v, const py::array& p1,
+                   const py::array& p2, const Scenario& start, std::vector<std::string> free) {
+  const identify::MeasuredRecord record = record_from(t, v, p1, p2);
+  if (free.empty()) free = identify::default_free_keys(start);
+  identify::check_free_keys(start, free);
+  const identify::FitOptions options;
+  py::gil_scoped_release release;
+  const identify::FitResult result = identify::fit_model(record, start, free, options);
+  return identify::fit_json(result, options, record);
 }
 
 void check_rate(double rate_Hz) {
@@ -238,4 +282,6 @@ PYBIND11_MODULE(_core, m) {
     return lyapunov_json(r, o);
   });
   m.def("sweep", &sweep_py);
+  m.def("friction_json", &friction_py);
+  m.def("fit_json", &fit_py);
 }

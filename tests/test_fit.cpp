@@ -45,7 +45,7 @@ Scenario off_start(const Scenario& truth, double f1, double f2, double fc, doubl
   return s;
 }
 
-const FittedParameter& param(const FitResult& r, const std::string& key) {
+const FittedKey& param(const FitResult& r, const std::string& key) {
   for (const auto& p : r.parameters) {
     if (p.key == key) return p;
   }

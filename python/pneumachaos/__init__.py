@@ -158,6 +158,22 @@ def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s
                                                 float(measure_s), float(renormalize_s)))
 
 
+def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False):
+    """Seal friction from a measured record, as `pneumachaos friction --json` gives it: t [s],
+    v [m/s], P1 and P2 [Pa, absolute] as 1-D arrays of one length; geometry and moving mass
+    from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre" (default
+    all). Raises ValueError for bad input, RuntimeError when a fit does not converge."""
+    return json.loads(_core.friction_json(t, v, P1, P2, _scenario(scenario)._core,
+                                          list(models), bool(pressure_dependent)))
+
+
+def fit(t, v, P1, P2, scenario=None, free=()):
+    """Identifies the scenario keys named in `free` (default: S1, S2, the seal's Fc and Fs)
+    from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it.
+    Raises ValueError for bad input, RuntimeError when the fit does not converge."""
+    return json.loads(_core.fit_json(t, v, P1, P2, _scenario(scenario)._core, list(free)))
+
+
 def _print_progress():
     state = {"last": 0.0}
 

@@ -122,3 +122,27 @@ def test_model_lyapunov_and_a_small_sweep(tmp_path):
     assert (tmp_path / "map" / "runs.csv").exists()
     with pytest.raises(ValueError, match="already holds a sweep"):
         pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=2, out=str(tmp_path / "map"))
+
+
+def test_friction_and_fit_on_a_simulated_record():
+    """A stick-slip record of the simple rig (one rigid mass, Stribeck seal Fc 20 N, Fs 40 N,
+    docs/variants/simple_rig.toml): the friction fit gets the seal back, and `fit` the
+    exhaust valve area from a start 20 % off (docs/friction.md, docs/fit.md give the
+    accuracies on degraded records; this record is clean)."""
+    rig = pc.Scenario.from_toml(SIMPLE_RIG)
+    rig.set("friction.model", "stribeck")
+    rig.set("circuit.S2_mm2", 0.2)
+    run = pc.simulate(rig, duration_s=3.0)
+    t, v, p1, p2 = run.t, run.v, run.P1, run.P2
+    f = pc.friction(t, v, p1, p2, rig, models=["stribeck"])
+    assert f["preferred_model"] == "stribeck"
+    assert f["fits"]["stribeck"]["Fc_N"]["value"] == pytest.approx(20.0, rel=0.05)
+    assert f["fits"]["stribeck"]["Fs_N"]["value"] == pytest.approx(40.0, rel=0.05)
+    start = rig.copy()
+    start.set("circuit.S2_mm2", 0.24)
+    r = pc.fit(t, v, p1, p2, start, free=["circuit.S2_mm2"])
+    assert r["parameters"]["circuit.S2_mm2"]["value"] == pytest.approx(0.2, rel=0.05)
+    with pytest.raises(ValueError, match="v: expected a 1-D array"):
+        pc.friction(t, np.ones((2, 2)), p1, p2, rig)
+    with pytest.raises(ValueError, match="unknown"):
+        pc.fit(t, v, p1, p2, start, free=["circuit.S3_mm2"])

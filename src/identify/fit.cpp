@@ -554,7 +554,7 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
   result.reduced_chi2 = 2.0 * summary.final_cost / std::max(1, nr - fitted);
   result.summary = summary.BriefReport();
   for (int j = 0; j < np; ++j) {
-    FittedParameter p;
+    FittedKey p;
     p.key = free[j].key;
     p.unit = free[j].unit;
     p.start = free[j].start;

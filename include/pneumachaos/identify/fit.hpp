@@ -56,7 +56,9 @@ struct FitOptions {
   bool verbose = false;  ///< print Ceres's per-iteration progress to stderr
 };
 
-struct FittedParameter {
+/// A scenario key as fitted (the friction fits have their own FittedParameter, named as the
+/// friction keys are).
+struct FittedKey {
   std::string key;     ///< scenario key, e.g. "circuit.S1_mm2"
   std::string unit;    ///< the key's unit, e.g. "mm^2"
   double start = 0.0;  ///< start value (key's unit)
@@ -76,7 +78,7 @@ struct ValidationSeries {
 
 struct FitResult {
   Scenario scenario;  ///< the start scenario with the fitted values set
-  std::vector<FittedParameter> parameters;
+  std::vector<FittedKey> parameters;
   std::size_t segments = 0;
   std::size_t residuals = 0;
   double initial_cost = 0.0;  ///< Ceres cost 1/2 sum r^2 (scaled residuals)
