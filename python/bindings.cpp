@@ -74,18 +74,13 @@ std::string friction_py(const py::array& t, const py::array& v, const py::array&
                         const py::array& p2, const Scenario& scenario,
                         const std::vector<std::string>& models, bool pressure_dependent) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
-  identify::FrictionFitOptions fit;
-  if (!models.empty()) fit.models.clear();
-  for (const auto& m : models) fit.models.push_back(identify::parse_fit_model(m, "models"));
-  fit.pressure_dependent = pressure_dependent;
-  fit.fixed_exponent = scenario.friction.stribeck_exponent;
-  fit.start = scenario.friction;
+  const identify::FrictionFitOptions fit =
+      identify::fit_options_for(scenario, models, pressure_dependent, "models");
   const identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
   py::gil_scoped_release release;
   const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
   const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
-  if (const auto* failed = fits.failed())
-    throw RunError("friction fit " + failed->name, "did not converge (" + failed->summary + ")");
+  identify::require_converged(fits);
   return identify::friction_json(estimate, fits, settings, record.source);
 }
 

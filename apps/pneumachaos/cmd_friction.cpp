@@ -60,19 +60,9 @@ Action add_friction(CLI::App& app) {
   add_record_column_options(cmd, args->columns);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
-    identify::FrictionFitOptions fit;
-    if (!args->models.empty()) {
-      fit.models.clear();
-      for (const auto& m : args->models) {
-        const auto model = identify::parse_fit_model(m, "--model");
-        if (std::find(fit.models.begin(), fit.models.end(), model) == fit.models.end())
-          fit.models.push_back(model);
-      }
-    }
-    fit.pressure_dependent = args->pressure_dependent;
+    identify::FrictionFitOptions fit = identify::fit_options_for(
+        scenario, args->models, args->pressure_dependent, "--model");
     fit.max_iterations = args->max_iterations;
-    fit.fixed_exponent = scenario.friction.stribeck_exponent;
-    fit.start = scenario.friction;
     identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
     if (args->window) {
       if (*args->window < 3 || *args->window % 2 == 0)
@@ -84,10 +74,7 @@ Action add_friction(CLI::App& app) {
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
     const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
     fmt::print("{}", identify::friction_summary(estimate, fits));
-    // A fit that did not converge: its reason, exit 3, and nothing written.
-    if (const auto* failed = fits.failed())
-      throw RunError(fmt::format("friction fit {}", failed->name),
-                     fmt::format("did not converge ({}); no output written", failed->summary));
+    identify::require_converged(fits);  // else its reason, exit 3, and nothing written
     const identify::ModelFit* preferred = nullptr;
     for (const auto& f : fits.fits)
       if (f.name == fits.preferred_model) preferred = &f;

@@ -623,4 +623,25 @@ FrictionFits fit_friction(const FrictionEstimate& e, const FrictionFitOptions& o
   return out;
 }
 
+FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<std::string>& models,
+                                   bool pressure_dependent, const std::string& where) {
+  FrictionFitOptions fit;
+  if (!models.empty()) fit.models.clear();
+  for (const auto& m : models) {
+    const FrictionFitModel model = parse_fit_model(m, where);
+    if (std::find(fit.models.begin(), fit.models.end(), model) == fit.models.end())
+      fit.models.push_back(model);
+  }
+  fit.pressure_dependent = pressure_dependent;
+  fit.fixed_exponent = scenario.friction.stribeck_exponent;
+  fit.start = scenario.friction;
+  return fit;
+}
+
+void require_converged(const FrictionFits& fits) {
+  if (const ModelFit* failed = fits.failed())
+    throw RunError("friction fit " + failed->name,
+                   "did not converge (" + failed->summary + "); no output written");
+}
+
 }  // namespace pneumachaos::identify

@@ -10,6 +10,7 @@
 
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/scenario.hpp"
 
 namespace pneumachaos::identify {
 
@@ -66,6 +67,15 @@ struct FrictionFits {
 };
 
 FrictionFits fit_friction(const FrictionEstimate& estimate, const FrictionFitOptions& options);
+
+/// The fit options a scenario implies: its seal as the start (and Stribeck exponent for the
+/// fixed-delta model), the named models (empty: all; repeats ignored; an unknown name is an
+/// Error at `where`), pressure dependence on request.
+FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<std::string>& models,
+                                   bool pressure_dependent, const std::string& where);
+
+/// Throws RunError naming the first fit that did not converge, with Ceres's reason.
+void require_converged(const FrictionFits& fits);
 
 /// The steady friction of a fitted law at velocity v (gauge sum for pressure dependence).
 double steady_friction_N(const FrictionParams& p, double v_m_per_s, double gauge_sum_Pa);
