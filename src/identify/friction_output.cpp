@@ -70,36 +70,21 @@ std::string friction_summary(const FrictionEstimate& e, const FrictionFits& fits
   return s;
 }
 
-std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
-                          const EstimateSettings& st, const std::string& source) {
-  using nlohmann::json;
-  json j;
-  j["file"] = source;
-  j["samples"] = e.t_s.size();
-  j["settings"] = {{"A1_m2", st.area_head_m2},
-                   {"A2_m2", st.area_rod_m2},
-                   {"mass_kg", st.mass_kg},
-                   {"ambient_Pa", st.ambient_Pa},
-                   {"external_force_N", st.external_force_N}};
-  j["acceleration"] = {{"source", e.acceleration_given ? "column" : "savitzky-golay"},
-                       {"window_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width + 1},
-                       {"window_min_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width_min + 1},
-                       {"window_max_samples", e.acceleration_given ? 0 : 2 * e.sg_half_width_max + 1},
-                       {"polynomial_order", 2}};
-  j["velocity_noise_mm_per_s"] = number(e.velocity_noise_m_per_s * 1e3);
-  j["stick_threshold_mm_per_s"] = number(e.stick_threshold_m_per_s * 1e3);
-  j["force_noise_N"] = number(e.force_noise_N);
-  j["sliding_samples"] = e.sliding_count();
+namespace {
+
+using nlohmann::json;
+
+json sticks_json(const FrictionEstimate& e) {
   json sticks = json::array();
   for (const auto& s : e.sticks)
     sticks.push_back({{"t_begin_s", s.t_begin_s},
                       {"t_end_s", s.t_end_s},
                       {"breakaway_N", number(s.breakaway_N)},
                       {"direction", s.direction}});
-  j["stick_intervals"] = sticks;
-  json b = json::array();
-  for (double x : breakaways(e)) b.push_back(x);
-  j["breakaway_N"] = b;
+  return sticks;
+}
+
+json curve_json(const FrictionEstimate& e) {
   json curve = json::array();
   for (const auto& c : e.curve)
     curve.push_back({{"v_mm_per_s", c.v_mean_m_per_s * 1e3},
@@ -108,7 +93,10 @@ std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
                      {"F_N", c.F_mean_N},
                      {"F_sd_N", c.F_sd_N},
                      {"count", c.count}});
-  j["steady_curve"] = curve;
+  return curve;
+}
+
+json loops_json(const FrictionEstimate& e) {
   json loops = json::array();
   for (const auto& x : e.excursions) {
     json marks = json::object();
@@ -123,28 +111,60 @@ std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
                      {"to_stick", x.to_stick},
                      {"marks", marks}});
   }
-  j["loops"] = loops;
+  return loops;
+}
+
+json fit_json_of(const ModelFit& f) {
+  json m = json::object();
+  if (!f.fitted) {
+    m["skipped"] = f.skipped;
+    return m;
+  }
+  for (const auto& p : f.params)
+    m[p.name] = {{"value", number(p.value)},
+                 {"stderr", number(p.stderr_value)},
+                 {"unit", p.unit},
+                 {"fixed", p.fixed}};
+  m["rms_N"] = number(f.rms_N);
+  m["points"] = f.points;
+  m["free_parameters"] = f.free_params;
+  m["bic"] = number(f.bic);
+  m["aic"] = number(f.aic);
+  m["converged"] = f.converged;
+  m["summary"] = f.summary;
+  return m;
+}
+
+}  // namespace
+
+std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
+                          const EstimateSettings& st, const std::string& source) {
+  json j;
+  j["file"] = source;
+  j["samples"] = e.t_s.size();
+  j["settings"] = {{"A1_m2", st.area_head_m2},
+                   {"A2_m2", st.area_rod_m2},
+                   {"mass_kg", st.mass_kg},
+                   {"ambient_Pa", st.ambient_Pa},
+                   {"external_force_N", st.external_force_N}};
+  const auto window = [&](std::size_t h) { return e.acceleration_given ? 0 : 2 * h + 1; };
+  j["acceleration"] = {{"source", e.acceleration_given ? "column" : "savitzky-golay"},
+                       {"window_samples", window(e.sg_half_width)},
+                       {"window_min_samples", window(e.sg_half_width_min)},
+                       {"window_max_samples", window(e.sg_half_width_max)},
+                       {"polynomial_order", 2}};
+  j["velocity_noise_mm_per_s"] = number(e.velocity_noise_m_per_s * 1e3);
+  j["stick_threshold_mm_per_s"] = number(e.stick_threshold_m_per_s * 1e3);
+  j["force_noise_N"] = number(e.force_noise_N);
+  j["sliding_samples"] = e.sliding_count();
+  j["stick_intervals"] = sticks_json(e);
+  j["breakaway_N"] = breakaways(e);
+  j["steady_curve"] = curve_json(e);
+  j["loops"] = loops_json(e);
   json fj = json::object(), rms = json::object();
   for (const auto& f : fits.fits) {
-    json m = json::object();
-    if (!f.fitted) {
-      m["skipped"] = f.skipped;
-    } else {
-      for (const auto& p : f.params)
-        m[p.name] = {{"value", number(p.value)},
-                     {"stderr", number(p.stderr_value)},
-                     {"unit", p.unit},
-                     {"fixed", p.fixed}};
-      m["rms_N"] = number(f.rms_N);
-      m["points"] = f.points;
-      m["free_parameters"] = f.free_params;
-      m["bic"] = number(f.bic);
-      m["aic"] = number(f.aic);
-      m["converged"] = f.converged;
-      m["summary"] = f.summary;
-      rms[f.name] = number(f.rms_N);
-    }
-    fj[f.name] = m;
+    fj[f.name] = fit_json_of(f);
+    if (f.fitted) rms[f.name] = number(f.rms_N);
   }
   j["fits"] = fj;
   j["rms_N"] = rms;
