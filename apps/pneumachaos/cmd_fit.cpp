@@ -28,6 +28,74 @@ struct FitArgs {
   bool verbose = false;
 };
 
+void add_fit_options(CLI::App* cmd, FitArgs& a) {
+  cmd->add_option("record", a.record, "CSV record: t[s], v[m/s], P1[Pa], P2[Pa] (absolute), optional x[m]")
+      ->required()
+      ->check(CLI::ExistingFile);
+  add_scenario_options(cmd, a.scenario);
+  cmd->add_option("--free", a.free,
+                  "a scenario key to fit (repeatable), e.g. --free circuit.S1_mm2 "
+                  "--free cylinder.dead_volume_head_cm3; default: circuit.S1_mm2, "
+                  "circuit.S2_mm2, friction.Fc_N, friction.Fs_N");
+  cmd->add_option("--json", a.json, "write the fitted values, standard errors and fit statistics as JSON");
+  cmd->add_option("--scenario-out", a.scenario_out, "write the fitted scenario as TOML");
+  cmd->add_option("--plot-out", a.plot_out,
+                  "directory for the validation series (measured vs simulated CSV), its gnuplot "
+                  "scripts and figure");
+  add_record_column_options(cmd, a.columns);
+  cmd->add_option("--segment", a.segment_s, "segment length [s] of the final fit (default 0.2)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--pressure-scale", a.pressure_scale_Pa,
+                  "noise scale dividing the pressure residuals [Pa] (default 1000)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--velocity-scale", a.velocity_scale_mm_s,
+                  "noise scale dividing the velocity residuals [mm/s] (default 30)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-iterations", a.max_iterations,
+                  "Ceres iterations allowed per fit (default 50); a fit that needs more has "
+                  "not converged (exit 3)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--verbose", a.verbose, "print Ceres's iterations to standard error");
+}
+
+identify::FitOptions fit_options_from(const FitArgs& a) {
+  identify::FitOptions options;
+  if (a.segment_s) options.segment_length_s = *a.segment_s;
+  if (a.pressure_scale_Pa) options.pressure_scale_Pa = *a.pressure_scale_Pa;
+  if (a.velocity_scale_mm_s) options.velocity_scale_m_per_s = *a.velocity_scale_mm_s * 1e-3;
+  if (a.max_iterations) options.max_iterations = *a.max_iterations;
+  options.verbose = a.verbose;
+  return options;
+}
+
+void print_fit(const identify::MeasuredRecord& record, const identify::FitResult& r,
+               const identify::FitOptions& options) {
+  fmt::print("fit: {} samples, {} segments of {:g} s, {} Ceres iterations, {:.1f} s\n",
+             record.size(), r.segments, options.segment_length_s, r.iterations, r.wall_time_s);
+  for (const auto& p : r.parameters) {
+    fmt::print("  {:<34} {:>12.6g} +- {:<10.3g} {:<6} (start {:g})\n", p.key, p.value,
+               p.standard_error, p.unit, p.start);
+  }
+  fmt::print("  rms error: P1 {:.0f} Pa, P2 {:.0f} Pa, v {:.2f} mm/s; reduced chi2 {:.3g}\n",
+             r.rms_P1_Pa, r.rms_P2_Pa, r.rms_v_m_per_s * 1e3, r.reduced_chi2);
+}
+
+// The validation figure, after the results are committed: without gnuplot the series and
+// scripts are still written, with a warning.
+void write_validation_figure(const identify::FitResult& r, const std::string& dir) {
+  FigureSpec spec;
+  spec.name = "fit_validation";
+  spec.caption = "Measured and segment-wise simulated v, P1, P2 with the fitted parameters";
+  spec.data = {{"fit_validation.csv", identify::validation_csv(r.validation)}};
+  spec.plot = identify::validation_plot_commands("fit_validation.csv");
+  spec.height = 800;
+  try {
+    render_figure(spec, dir);
+  } catch (const Error& e) {
+    fmt::print(stderr, "fit: warning: figure not rendered: {}\n", e.what());
+  }
+}
+
 }  // namespace
 
 Action add_fit(CLI::App& app) {
@@ -37,33 +105,7 @@ Action add_fit(CLI::App& app) {
       "Identify the model from a measured record (t, v, P1, P2[, x]): fit the scenario keys "
       "named by --free (default S1, S2, Fc, Fs) by segment-wise simulation; values with "
       "standard errors, a validation plot and the fitted scenario");
-  cmd->add_option("record", args->record, "CSV record: t[s], v[m/s], P1[Pa], P2[Pa] (absolute), optional x[m]")
-      ->required()
-      ->check(CLI::ExistingFile);
-  add_scenario_options(cmd, args->scenario);
-  cmd->add_option("--free", args->free,
-                  "a scenario key to fit (repeatable), e.g. --free circuit.S1_mm2 "
-                  "--free cylinder.dead_volume_head_cm3; default: circuit.S1_mm2, "
-                  "circuit.S2_mm2, friction.Fc_N, friction.Fs_N");
-  cmd->add_option("--json", args->json, "write the fitted values, standard errors and fit statistics as JSON");
-  cmd->add_option("--scenario-out", args->scenario_out, "write the fitted scenario as TOML");
-  cmd->add_option("--plot-out", args->plot_out,
-                  "directory for the validation series (measured vs simulated CSV), its gnuplot "
-                  "scripts and figure");
-  add_record_column_options(cmd, args->columns);
-  cmd->add_option("--segment", args->segment_s, "segment length [s] of the final fit (default 0.2)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--pressure-scale", args->pressure_scale_Pa,
-                  "noise scale dividing the pressure residuals [Pa] (default 1000)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--velocity-scale", args->velocity_scale_mm_s,
-                  "noise scale dividing the velocity residuals [mm/s] (default 30)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-iterations", args->max_iterations,
-                  "Ceres iterations allowed per fit (default 50); a fit that needs more has "
-                  "not converged (exit 3)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_flag("--verbose", args->verbose, "print Ceres's iterations to standard error");
+  add_fit_options(cmd, *args);
   return [args]() {
     const Scenario start = build_scenario(args->scenario.file, args->scenario.sets);
     const std::vector<std::string> free =
@@ -71,24 +113,10 @@ Action add_fit(CLI::App& app) {
     identify::check_free_keys(start, free);  // before reading: a bad key is exit 2 at once
     const identify::MeasuredRecord record = identify::read_measured_record(
         args->record, args->columns, identify::read_options_for(start));
-    identify::FitOptions options;
-    if (args->segment_s) options.segment_length_s = *args->segment_s;
-    if (args->pressure_scale_Pa) options.pressure_scale_Pa = *args->pressure_scale_Pa;
-    if (args->velocity_scale_mm_s) options.velocity_scale_m_per_s = *args->velocity_scale_mm_s * 1e-3;
-    if (args->max_iterations) options.max_iterations = *args->max_iterations;
-    options.verbose = args->verbose;
+    const identify::FitOptions options = fit_options_from(*args);
     // A fit that does not converge throws RunError: exit 3 and nothing written.
     const identify::FitResult r = identify::fit_model(record, start, free, options);
-
-    fmt::print("fit: {} samples, {} segments of {:g} s, {} Ceres iterations, {:.1f} s\n",
-               record.size(), r.segments, options.segment_length_s, r.iterations, r.wall_time_s);
-    for (const auto& p : r.parameters) {
-      fmt::print("  {:<34} {:>12.6g} +- {:<10.3g} {:<6} (start {:g})\n", p.key, p.value,
-                 p.standard_error, p.unit, p.start);
-    }
-    fmt::print("  rms error: P1 {:.0f} Pa, P2 {:.0f} Pa, v {:.2f} mm/s; reduced chi2 {:.3g}\n",
-               r.rms_P1_Pa, r.rms_P2_Pa, r.rms_v_m_per_s * 1e3, r.reduced_chi2);
-
+    print_fit(record, r, options);
     OutputSet outputs;
     if (!args->json.empty()) outputs.add(args->json) << identify::fit_json(r, options, record);
     if (!args->scenario_out.empty()) {
@@ -98,20 +126,7 @@ Action add_fit(CLI::App& app) {
           << scenario_to_toml(r.scenario);
     }
     outputs.commit();
-    if (!args->plot_out.empty()) {
-      FigureSpec spec;
-      spec.name = "fit_validation";
-      spec.caption = "Measured and segment-wise simulated v, P1, P2 with the fitted parameters";
-      spec.data = {{"fit_validation.csv", identify::validation_csv(r.validation)}};
-      spec.plot = identify::validation_plot_commands("fit_validation.csv");
-      spec.height = 800;
-      try {
-        render_figure(spec, args->plot_out);
-      } catch (const Error& e) {
-        // The series and scripts are written; only the image is missing.
-        fmt::print(stderr, "fit: warning: figure not rendered: {}\n", e.what());
-      }
-    }
+    if (!args->plot_out.empty()) write_validation_figure(r, args->plot_out);
     return kExitOk;
   };
 }

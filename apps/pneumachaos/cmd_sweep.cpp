@@ -53,72 +53,97 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   return kExitOk;
 }
 
+struct SweepArgs {
+  ScenarioArgs scenario;
+  std::vector<std::string> grids;
+  std::optional<std::size_t> repeats;
+  std::optional<std::uint64_t> seed;
+  std::size_t threads = 0;
+  std::string out;
+  bool resume = false;
+  bool wolf = false;
+  ModelExponentSpec model;
+  std::string replay;
+  std::string record;
+};
+
+void add_model_exponent_options(CLI::App* cmd, ModelExponentSpec& model) {
+  CLI::Option* flag =
+      cmd->add_flag("--model-exponent", model.enabled,
+                    "also store each run's model exponent (as `lyapunov`) over the rest of its "
+                    "stroke, with its uncertainty (about 1.5x the time per run)");
+  cmd->add_option("--model-transient", model.transient_s,
+                  "with --model-exponent: seconds of start-up discarded (default 1)")
+      ->needs(flag);
+  cmd->add_option("--model-measure", model.measure_s,
+                  "with --model-exponent: at most this many seconds measured (default 0: the "
+                  "rest of the run, to its stroke end)")
+      ->needs(flag);
+  cmd->add_option("--model-renormalize", model.renormalize_s,
+                  "with --model-exponent: renormalisation interval [s] (default 0.02)")
+      ->needs(flag);
+}
+
+void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
+  add_scenario_options(cmd, a.scenario);
+  cmd->add_option("--grid", a.grids, "grid axis KEY=FROM:TO:STEP in the key's unit (repeatable)");
+  cmd->add_option(
+      "--repeats", a.repeats,
+      "runs per grid point (default: the file's [sweep] repeats, else 5 as in the paper)");
+  cmd->add_option("--seed", a.seed, "seed of the run-to-run variation (default 1)");
+  cmd->add_option("--threads", a.threads, "worker threads (default 0: all cores)")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("--out", a.out, "directory for the journal and the results");
+  cmd->add_flag("--resume", a.resume, "finish an interrupted sweep in --out");
+  cmd->add_flag("--wolf", a.wolf, "also run Wolf's estimator on every record (slower)");
+  add_model_exponent_options(cmd, a.model);
+  cmd->add_option("--replay", a.replay,
+                  "POINT:REPEAT: run only that run of this sweep again (same grid, repeats and "
+                  "seed) and write its record; its runs.csv line goes to standard error");
+  cmd->add_option("-o,--record", a.record,
+                  "with --replay: CSV file for the record (default: standard output)");
+}
+
+// The command line wins over the scenario file's [sweep] table, which wins over defaults.
+SweepSpec sweep_spec_from(const SweepArgs& a) {
+  SweepSpec spec;
+  spec.base = build_scenario(a.scenario.file, a.scenario.sets);
+  const SweepSettings file =
+      a.scenario.file.empty() ? SweepSettings{} : read_sweep_settings(a.scenario.file);
+  for (const auto& g : a.grids.empty() ? file.grid : a.grids) spec.axes.push_back(parse_grid_axis(g));
+  if (spec.axes.empty()) spec.axes = paper_valve_grid();
+  spec.repeats = a.repeats.value_or(file.repeats.value_or(5));
+  spec.seed = a.seed.value_or(file.seed.value_or(1));
+  spec.wolf = a.wolf;
+  spec.model_exponent = a.model;
+  return spec;
+}
+
+void print_sweep_summary(const SweepSpec& spec, const SweepSummary& s, const std::string& out) {
+  fmt::print(
+      "sweep: {} points x {} repeats = {} runs ({} failed); stick-slip region {} points, "
+      "100 %-chaos region {} points, chaos anywhere {} points; results in {}\n",
+      s.points, spec.repeats, s.runs, s.failed, s.stick_slip_points, s.chaos_full_points,
+      s.chaos_any_points, out);
+  if (spec.model_exponent.enabled) {
+    fmt::print(
+        "model exponent beyond 3 sigma: in every run at {} points, in some run at {} "
+        "points\n",
+        s.model_chaos_full_points, s.model_chaos_any_points);
+  }
+}
+
 }  // namespace
 
 Action add_sweep(CLI::App& app) {
-  struct Args {
-    ScenarioArgs scenario;
-    std::vector<std::string> grids;
-    std::optional<std::size_t> repeats;
-    std::optional<std::uint64_t> seed;
-    std::size_t threads = 0;
-    std::string out;
-    bool resume = false;
-    bool wolf = false;
-    ModelExponentSpec model;
-    std::string replay;
-    std::string record;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
       "Repeated runs over a parameter grid (default: the paper's S1 x S2 grid, 5 repeats), "
       "each simulated and judged stick-slip / chaotic from its velocity record; resumable");
-  add_scenario_options(cmd, args->scenario);
-  cmd->add_option("--grid", args->grids,
-                  "grid axis KEY=FROM:TO:STEP in the key's unit (repeatable)");
-  cmd->add_option(
-      "--repeats", args->repeats,
-      "runs per grid point (default: the file's [sweep] repeats, else 5 as in the paper)");
-  cmd->add_option("--seed", args->seed, "seed of the run-to-run variation (default 1)");
-  cmd->add_option("--threads", args->threads, "worker threads (default 0: all cores)")
-      ->check(CLI::Range(0, 4096));
-  cmd->add_option("--out", args->out, "directory for the journal and the results");
-  cmd->add_flag("--resume", args->resume, "finish an interrupted sweep in --out");
-  cmd->add_flag("--wolf", args->wolf, "also run Wolf's estimator on every record (slower)");
-  CLI::Option* model =
-      cmd->add_flag("--model-exponent", args->model.enabled,
-                    "also store each run's model exponent (as `lyapunov`) over the rest of its "
-                    "stroke, with its uncertainty (about 1.5x the time per run)");
-  cmd->add_option("--model-transient", args->model.transient_s,
-                  "with --model-exponent: seconds of start-up discarded (default 1)")
-      ->needs(model);
-  cmd->add_option("--model-measure", args->model.measure_s,
-                  "with --model-exponent: at most this many seconds measured (default 0: the "
-                  "rest of the run, to its stroke end)")
-      ->needs(model);
-  cmd->add_option("--model-renormalize", args->model.renormalize_s,
-                  "with --model-exponent: renormalisation interval [s] (default 0.02)")
-      ->needs(model);
-  cmd->add_option("--replay", args->replay,
-                  "POINT:REPEAT: run only that run of this sweep again (same grid, repeats and "
-                  "seed) and write its record; its runs.csv line goes to standard error");
-  cmd->add_option("-o,--record", args->record,
-                  "with --replay: CSV file for the record (default: standard output)");
+  add_sweep_options(cmd, *args);
   return [args]() {
-    SweepSpec spec;
-    spec.base = build_scenario(args->scenario.file, args->scenario.sets);
-    // The command line wins over the scenario file's [sweep] table, which wins over defaults.
-    const SweepSettings file =
-        args->scenario.file.empty() ? SweepSettings{} : read_sweep_settings(args->scenario.file);
-    for (const auto& g : args->grids.empty() ? file.grid : args->grids) {
-      spec.axes.push_back(parse_grid_axis(g));
-    }
-    if (spec.axes.empty()) spec.axes = paper_valve_grid();
-    spec.repeats = args->repeats.value_or(file.repeats.value_or(5));
-    spec.seed = args->seed.value_or(file.seed.value_or(1));
-    spec.wolf = args->wolf;
-    spec.model_exponent = args->model;
+    const SweepSpec spec = sweep_spec_from(*args);
     if (!args->replay.empty()) return replay(spec, args->replay, args->record);
     if (!args->record.empty()) throw Error("--record", "needs --replay");
     SweepOptions options;
@@ -127,17 +152,7 @@ Action add_sweep(CLI::App& app) {
     options.threads = args->threads;
     const SweepSummary s = run_sweep(spec, options);
     if (!s.wrote_files) return kExitOk;  // another MPI rank reports
-    fmt::print(
-        "sweep: {} points x {} repeats = {} runs ({} failed); stick-slip region {} points, "
-        "100 %-chaos region {} points, chaos anywhere {} points; results in {}\n",
-        s.points, spec.repeats, s.runs, s.failed, s.stick_slip_points, s.chaos_full_points,
-        s.chaos_any_points, args->out);
-    if (spec.model_exponent.enabled) {
-      fmt::print(
-          "model exponent beyond 3 sigma: in every run at {} points, in some run at {} "
-          "points\n",
-          s.model_chaos_full_points, s.model_chaos_any_points);
-    }
+    print_sweep_summary(spec, s, args->out);
     return kExitOk;
   };
 }

@@ -472,6 +472,76 @@ StageOutcome solve_stage(const Prepared& prep, const Scenario& start,
   return out;
 }
 
+// The start must simulate over the record, or there is nothing to fit from.
+void require_start_simulates(const Prepared& prep, const Scenario& start, const FitOptions& options) {
+  std::vector<double> a, b, c;
+  std::string why;
+  if (!simulate_segments(prep, start, options, a, b, c, &why))
+    throw RunError("fit", "the start scenario does not simulate over the record: " + why);
+}
+
+// The global stage: a fit from the start with each candidate segment length, each judged by
+// the cost with the final segments; q becomes the best candidate's parameters (or stays at the
+// start when none beats it). cost_of is that final cost (NaN when it fails).
+template <typename Cost>
+void global_stage(const MeasuredRecord& record, const Scenario& start,
+                  const std::vector<FreeParam>& free, const FitOptions& options,
+                  const Cost& cost_of, std::vector<double>& q, FitResult& result) {
+  double best = cost_of(q);
+  result.initial_cost = best;
+  std::vector<double> lengths = options.first_segment_lengths_s;
+  if (std::find(lengths.begin(), lengths.end(), options.segment_length_s) == lengths.end())
+    lengths.push_back(options.segment_length_s);
+  for (double length : lengths) {
+    if (!(length > 0)) continue;
+    FitOptions o = options;
+    o.segment_length_s = length;
+    std::vector<double> qc(free.size(), kOffset);
+    double c = std::numeric_limits<double>::quiet_NaN();
+    try {
+      const StageOutcome out = solve_stage(prepare(record, o), start, free, o, qc, false);
+      result.iterations += static_cast<int>(out.summary.iterations.size());
+      c = cost_of(qc);
+    } catch (const RunError&) {
+      // a candidate that does not converge is dropped; the final fit reports its own failure
+    }
+    result.candidate_segment_lengths_s.push_back(length);
+    result.candidate_costs.push_back(c);
+    if (std::isfinite(c) && !(c >= best)) {
+      best = c;
+      q = qc;
+      result.chosen_candidate = static_cast<int>(result.candidate_costs.size()) - 1;
+    }
+  }
+}
+
+// The fitted values with standard errors: the covariance of log(value / start), scaled by the
+// reduced chi-square, carried to the value.
+void add_parameters(const std::vector<FreeParam>& free, const std::vector<double>& C,
+                    FitResult& result) {
+  const std::size_t np = free.size();
+  for (std::size_t j = 0; j < np; ++j) {
+    FittedKey p;
+    p.key = free[j].key;
+    p.unit = free[j].unit;
+    p.start = free[j].start;
+    p.value = key_value(result.scenario, p.key);
+    const double var_log = C[j * np + j] * result.reduced_chi2;
+    p.standard_error = p.value * std::sqrt(std::max(0.0, var_log));
+    result.parameters.push_back(p);
+  }
+}
+
+void add_validation(const Prepared& prep, const FitOptions& options,
+                    const std::vector<double>& starts, FitResult& result) {
+  result.validation = validation_of(prep, result.scenario, options,
+                                    options.fit_start_pressures ? &starts : nullptr);
+  const ValidationSeries& vs = result.validation;
+  result.rms_P1_Pa = rms(vs.p1_sim, vs.p1_meas);
+  result.rms_P2_Pa = rms(vs.p2_sim, vs.p2_meas);
+  result.rms_v_m_per_s = rms(vs.v_sim, vs.v_meas);
+}
+
 }  // namespace
 
 FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
@@ -488,18 +558,9 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
   start.validate();
   std::vector<FreeParam> free;
   for (const auto& key : free_keys) free.push_back({key, key_unit(key), key_value(start, key)});
-  const int np = static_cast<int>(free.size());
-
-  FitResult result;
   const Prepared final_prep = prepare(record, options);
-  std::string why;
-  {  // the start must simulate, or there is nothing to fit from
-    std::vector<double> a, b, c;
-    if (!simulate_segments(final_prep, start, options, a, b, c, &why)) {
-      throw RunError("fit", "the start scenario does not simulate over the record: " + why);
-    }
-  }
-  // The cost 1/2 sum r^2 of parameters q with the final segments (NaN when it fails).
+  require_start_simulates(final_prep, start, options);
+
   const SegmentCost final_cost(final_prep, start, free, options);
   std::vector<double> residuals(3 * record.size());
   const auto cost_of = [&](const std::vector<double>& q) {
@@ -509,66 +570,25 @@ FitResult fit_model(const MeasuredRecord& record, const Scenario& start,
     for (double r : residuals) c += r * r;
     return 0.5 * c;
   };
+  FitResult result;
+  std::vector<double> q(free.size(), kOffset);
+  global_stage(record, start, free, options, cost_of, q, result);
 
-  std::vector<double> q(np, kOffset);
-  double best = cost_of(q);
-  result.initial_cost = best;
-  std::vector<double> lengths = options.first_segment_lengths_s;
-  if (std::find(lengths.begin(), lengths.end(), options.segment_length_s) == lengths.end()) {
-    lengths.push_back(options.segment_length_s);
-  }
-  for (double length : lengths) {
-    if (!(length > 0)) continue;
-    FitOptions o = options;
-    o.segment_length_s = length;
-    std::vector<double> qc(np, kOffset);
-    double c = std::numeric_limits<double>::quiet_NaN();
-    try {
-      const Prepared prep = prepare(record, o);
-      const StageOutcome out = solve_stage(prep, start, free, o, qc, false);
-      result.iterations += static_cast<int>(out.summary.iterations.size());
-      c = cost_of(qc);
-    } catch (const RunError&) {
-      // a candidate that does not converge is dropped; the final fit reports its own failure
-    }
-    result.candidate_segment_lengths_s.push_back(length);
-    result.candidate_costs.push_back(c);
-    if (std::isfinite(c) && !(c >= best)) {
-      best = c;
-      q = qc;
-      result.chosen_candidate = static_cast<int>(result.candidate_costs.size()) - 1;
-    }
-  }
   std::vector<double> starts;
   const StageOutcome outcome = solve_stage(final_prep, start, free, options, q, true, &starts);
   result.iterations += static_cast<int>(outcome.summary.iterations.size());
   const ceres::Solver::Summary& summary = outcome.summary;
   const int nr = static_cast<int>(3 * record.size());
-  const std::vector<double>& C = outcome.covariance;
-
+  const int fitted = static_cast<int>(free.size()) +
+                     (options.fit_start_pressures ? 2 * static_cast<int>(final_prep.segments.size()) : 0);
   result.scenario = with_values(start, free, q.data());
   result.segments = final_prep.segments.size();
   result.residuals = static_cast<std::size_t>(nr);
   result.final_cost = summary.final_cost;
-  const int fitted = np + (options.fit_start_pressures ? 2 * static_cast<int>(final_prep.segments.size()) : 0);
   result.reduced_chi2 = 2.0 * summary.final_cost / std::max(1, nr - fitted);
   result.summary = summary.BriefReport();
-  for (int j = 0; j < np; ++j) {
-    FittedKey p;
-    p.key = free[j].key;
-    p.unit = free[j].unit;
-    p.start = free[j].start;
-    p.value = key_value(result.scenario, p.key);
-    const double var_log = C[static_cast<std::size_t>(j * np + j)] * result.reduced_chi2;
-    p.standard_error = p.value * std::sqrt(std::max(0.0, var_log));
-    result.parameters.push_back(p);
-  }
-  result.validation = validation_of(final_prep, result.scenario, options,
-                                    options.fit_start_pressures ? &starts : nullptr);
-  const ValidationSeries& vs = result.validation;
-  result.rms_P1_Pa = rms(vs.p1_sim, vs.p1_meas);
-  result.rms_P2_Pa = rms(vs.p2_sim, vs.p2_meas);
-  result.rms_v_m_per_s = rms(vs.v_sim, vs.v_meas);
+  add_parameters(free, outcome.covariance, result);
+  add_validation(final_prep, options, starts, result);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
