@@ -1,6 +1,7 @@
 #pragma once
 // The append-only journal of finished runs (private to the sweep module).
 
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -48,14 +49,19 @@ class Journal {
   [[nodiscard]] const std::vector<RunRecord>& existing() const { return existing_; }
   /// Opens (creating if needed) the own journal for appending.
   void open();
-  /// Appends one record and forces it to disk before returning.
+  /// Appends one record: written through to the operating system before returning, forced
+  /// to disk at least once a second (kSyncInterval) and by sync().
   void append(const RunRecord& record);
+  /// Forces everything appended so far to disk.
+  void sync();
 
  private:
   void write_line(const std::string& line);
   std::string path_;
   std::string fingerprint_;
+  static constexpr std::chrono::seconds kSyncInterval{1};
   std::FILE* file_ = nullptr;
+  std::chrono::steady_clock::time_point synced_{};
   std::vector<RunRecord> existing_;
 };
 

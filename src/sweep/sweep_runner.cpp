@@ -167,6 +167,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
                       tbb::simple_partitioner());
   });
   if (failure) std::rethrow_exception(failure);
+  journal.sync();
 }
 
 // Every rank's runs are in its journal once all have finished; read them all back.
