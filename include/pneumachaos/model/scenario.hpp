@@ -9,6 +9,7 @@
 #include "pneumachaos/core/run_settings.hpp"
 #include "pneumachaos/model/cylinder.hpp"
 #include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/supply_line.hpp"
 #include "pneumachaos/model/valve_flow.hpp"
 
 namespace pneumachaos {
@@ -79,6 +80,7 @@ struct Scenario {
   LoadParams load;
   VariationParams variation;
   ThermalParams thermal;
+  SupplyLineParams supply_line;  ///< off by default: the ideal supply of eqs. (2)-(3)
   RunParams run;
 
   [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }
