@@ -13,8 +13,8 @@ struct SupplyLineParams {
   double volume_m3 = 0.0;
   /// S0 of the regulator and its fittings, the line's source restriction.
   double regulator_S_m2 = 10.0e-6;
-  /// n of dP0/dt = n R T / V0 (W_in - W_out): 1 isothermal (a thin tube's wall keeps the air
-  /// near its temperature), 1.4 adiabatic.
+  /// n of dP0/dt = n R T / V0 (W_in - W_out): 1 isothermal, 1.4 adiabatic; a 4 mm tube's
+  /// air lies between (thermal time constant ~0.1 s, docs/model.md "Supply line").
   double polytropic_exponent = 1.0;
   [[nodiscard]] bool enabled() const { return volume_m3 > 0.0; }
 };
