@@ -72,12 +72,21 @@ T Plant::valve1_upstream(std::span<const T> x) const {
   return layout_.has_supply_line() ? x[layout_.P0] : T(supply_Pa_);
 }
 
+// Mass flow through S1 by the valve law, scaled by S1's opening fraction while the solenoid
+// valve opens (valve.S1_opening = lag): the flow is proportional to the effective area.
+template <typename T>
+T Plant::valve1_flow(std::span<const T> x) const {
+  const T W1 = valve1_->mass_flow(valve1_upstream(x), x[layout_.P1]);
+  if (layout_.has_valve_opening()) return W1 * x[layout_.S1_open];
+  return W1;
+}
+
 // Mass flow through S1 into chamber 1; with the energy equation, back-flow leaves chamber 1 at
 // its own temperature T1 and passes sqrt(T_supply / T1) times the flow sized at T_supply.
 template <typename T>
 T Plant::valve1_inflow(std::span<const T> x) const {
   using std::sqrt;
-  T W1 = valve1_->mass_flow(valve1_upstream(x), x[layout_.P1]);
+  T W1 = valve1_flow(x);
   if (layout_.has_temperatures() && W1 < 0.0) W1 = W1 * sqrt(T_supply_ / x[layout_.T1]);
   return W1;
 }
@@ -87,7 +96,7 @@ T Plant::head_chamber_rate(std::span<const T> x) const {
   const auto& L = layout_;
   const double k = polytropic_exponent_;
   const T V1 = geometry_.volume_head_m3(x[L.x]);
-  const T W1 = valve1_->mass_flow(valve1_upstream(x), x[L.P1]);
+  const T W1 = valve1_flow(x);
   return k * RT_ / V1 * W1 - k * x[L.P1] * A1_ / V1 * x[L.v];  // eq. (2)
 }
 
@@ -150,6 +159,9 @@ void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) 
   }
   // The line loses to chamber 1 exactly what chamber 1 gains (mass conservation).
   if (L.has_supply_line()) dxdt[L.P0] = line_->pressure_rate(x[L.P0], valve1_inflow(x));
+  // First-order opening of S1 from the switch at t = 0: a = 1 - exp(-t / tau).
+  if (L.has_valve_opening())
+    dxdt[L.S1_open] = (1.0 - x[L.S1_open]) / valve1_time_constant_s_;
 
   const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
                         std::size_t nz, double mass) {

@@ -77,6 +77,11 @@ void Scenario::validate() const {
   }
   check_friction(friction, "friction.");
   check_supply_line(supply_line);
+  if (valve_opening.lagged() && !(valve_opening.time_constant_s > 0.0)) {
+    throw Error("valve.S1_opening_time_ms",
+                fmt::format("{} ms is out of range: expected > 0",
+                            valve_opening.time_constant_s * 1e3));
+  }
   if (load.coupling == LoadCoupling::kSpring)
     check_friction(load.guide_friction, "guide_friction.");
   // The record is held in memory (a dozen channels of doubles): refuse up front what cannot

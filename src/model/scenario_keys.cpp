@@ -224,6 +224,14 @@ std::vector<KeySpec> build_keys() {
       "valve.laminar_ratio", "-",
       "pressure ratio above which the flow is linear in the pressure difference", 1.0,
       Range{0.9, 1.0, false, true}, [](auto& s) -> auto& { return s.valve.laminar_ratio; }));
+  k.push_back(word<ValveOpening>(
+      "valve.S1_opening",
+      "instant: S1 fully open at the switch; lag: S1's area opens as 1 - exp(-t / "
+      "S1_opening_time_ms) (the solenoid valve's response)",
+      {"instant", "lag"}, [](auto& s) -> auto& { return s.valve_opening.kind; }));
+  k.push_back(number(
+      "valve.S1_opening_time_ms", "ms", "time constant of S1's opening (S1_opening = lag)", 1e-3,
+      kPositive, [](auto& s) -> auto& { return s.valve_opening.time_constant_s; }));
   add_friction_keys(
       k, "friction.", "piston seal", [](auto& s) -> auto& { return s.friction; });
   k.push_back(number(

@@ -55,6 +55,7 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
     ts.add_channel("T2", "K");
   }
   if (L.has_supply_line()) ts.add_channel("P0", "Pa");
+  if (L.has_valve_opening()) ts.add_channel("S1_open", "-");
   ts.add_channel("stuck", "-");
 
   std::vector<double> row;
@@ -69,6 +70,7 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
     }
     if (L.has_temperatures()) row.insert(row.end(), {x[L.T1], x[L.T2]});
     if (L.has_supply_line()) row.push_back(x[L.P0]);
+    if (L.has_valve_opening()) row.push_back(x[L.S1_open]);
     row.push_back(out.piston_stuck ? 1.0 : 0.0);
     ts.append(row);
   };
