@@ -10,6 +10,7 @@
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "stuck_samples.hpp"
 #include "tight_options.hpp"
 
 namespace pneumachaos {
@@ -114,6 +115,28 @@ TEST(SupplyLine, DerivativeMovesMassFromTheLineIntoChamberOne) {
     EXPECT_NEAR((dx[L.P0] * V0 + dx[L.P1] * V1) / RT, W_reg, 1e-12 * std::abs(W_reg));
     EXPECT_EQ(dx[L.P0] * V0 < RT * W_reg, P0 > P1) << "the line feeds chamber 1 iff P0 > P1";
   }
+}
+
+// The line's pressure keeps evolving while the seal holds the piston: the stiction events
+// are located as without the line, v stays exactly 0 and x frozen on every held sample.
+TEST(SupplyLine, StictionStillHoldsTheVelocityAtExactlyZero) {
+  Scenario s = simple_rig_scenario();
+  s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip on the simple rig
+  s.supply_line.volume_m3 = 50e-6;
+  s.supply_line.regulator_S_m2 = 2e-6;
+  s.valve_opening.kind = ValveOpening::kLag;
+  const Plant plant(s);
+  const auto r = simulate(plant, s.run);
+  ASSERT_TRUE(r.summary.ok()) << r.summary.message;
+  EXPECT_GE(r.summary.events.stick, 3u);
+  EXPECT_GE(r.summary.events.slip, 3u);
+  const auto& P0 = r.series.channel("P0").values;
+  double largest_P0_change = 0.0;
+  const std::size_t stuck_samples = for_each_stuck_sample(r.series, [&](std::size_t i) {
+    largest_P0_change = std::max(largest_P0_change, std::abs(P0[i] - P0[i - 1]));
+  });
+  EXPECT_GT(stuck_samples, 100u);
+  EXPECT_GT(largest_P0_change, 1.0);  // Pa per ms: the line refills while the piston is held
 }
 
 TEST(SupplyLine, OffByDefaultAddsNoState) {
