@@ -243,6 +243,29 @@ TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
   y[R.load_v] = 0.05;
   y[R.guide_z] = 5e-5;
   expect_jacobian_matches_differences(rig, rig.sliding_mode(+1), y);
+
+  // The supply line's P0 couples into P1 through S1 (forward and back-flow) and is fed by
+  // the regulator; with the energy equation the back-flow carries T1; S1's opening fraction
+  // scales its flow.
+  for (const ChamberModel chambers : {ChamberModel::kPolytropic, ChamberModel::kEnergy}) {
+    Scenario l = simple_rig_scenario();
+    l.supply_line.volume_m3 = 40e-6;
+    l.supply_line.regulator_S_m2 = 5e-6;
+    l.thermal.chamber_model = chambers;
+    if (chambers == ChamberModel::kEnergy) l.valve_opening.kind = ValveOpening::kLag;
+    const Plant line(l);
+    std::vector<double> w = line.initial_state();
+    const StateLayout& W = line.layout();
+    w[W.x] = 0.2;
+    w[W.v] = 0.05;
+    w[W.P2] = 2.0e5;
+    for (const double P1 : {2.8e5, 3.2e5}) {  // below and above P0: S1 flows either way
+      w[W.P1] = P1;
+      w[W.P0] = 3.0e5;
+      if (W.has_valve_opening()) w[W.S1_open] = 0.4;  // S1 still opening
+      expect_jacobian_matches_differences(line, line.sliding_mode(+1), w);
+    }
+  }
 }
 
 }  // namespace

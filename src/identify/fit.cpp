@@ -128,6 +128,8 @@ bool simulate_one(const Plant& plant, const Scenario& scenario, const Prepared& 
   state[L.P1] = P1_0;
   state[L.P2] = P2_0;
   if (L.has_temperatures()) state[L.T1] = state[L.T2] = scenario.temperature_K;
+  if (L.has_supply_line()) state[L.P0] = plant.supply_pressure_Pa();
+  if (L.has_valve_opening()) state[L.S1_open] = 1.0;  // segments start after the switch
   if (L.has_load_body()) {
     // The load rides with the piston, its spring deflected by what holds it back: the guide's
     // steady friction at this velocity (none at rest) and the external force.

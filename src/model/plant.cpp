@@ -39,6 +39,15 @@ Plant::Plant(const Scenario& scenario)
   // chambers' own temperatures correct the flow out of them (plant_equations.hpp).
   valve1_.emplace(scenario.valve, scenario.gas, scenario.circuit.S1(), scenario.temperature_K);
   valve2_.emplace(scenario.valve, scenario.gas, scenario.circuit.S2(), scenario.temperature_K);
+  if (scenario.valve_opening.lagged()) {
+    valve1_time_constant_s_ = scenario.valve_opening.time_constant_s;
+    layout_.S1_open = layout_.append("S1_open", "-");
+  }
+  if (scenario.supply_line.enabled()) {
+    line_.emplace(scenario.supply_line, scenario.valve, scenario.gas, supply_Pa_,
+                  scenario.temperature_K);
+    layout_.P0 = layout_.append("P0", "Pa");
+  }
   if (thermal_.chamber_model == ChamberModel::kEnergy) {
     layout_.T1 = layout_.append("T1", "K");
     layout_.T2 = layout_.append("T2", "K");
@@ -68,6 +77,8 @@ std::vector<double> Plant::initial_state() const {
   x[layout_.P1] = ambient_Pa_;
   x[layout_.P2] = supply_Pa_;
   if (layout_.has_temperatures()) x[layout_.T1] = x[layout_.T2] = T_supply_;
+  if (layout_.has_supply_line()) x[layout_.P0] = supply_Pa_;  // charged while S1 was shut
+  if (layout_.has_valve_opening()) x[layout_.S1_open] = 0.0;  // S1 starts to open at t = 0
   // The seal (and guide) rested before the valve switched.
   if (layout_.seal_z_count > 0)
     seal_->rest_state(std::span<double>(x).subspan(layout_.seal_z, layout_.seal_z_count));
@@ -216,6 +227,8 @@ std::vector<double> Plant::state_scales() const {
   s[L.x] = 1e-3;
   s[L.v] = 1e-2;
   s[L.P1] = s[L.P2] = 1e4;
+  if (L.has_supply_line()) s[L.P0] = 1e4;
+  if (L.has_valve_opening()) s[L.S1_open] = 1e-2;
   if (L.has_temperatures()) s[L.T1] = s[L.T2] = 1.0;  // 1 K
   for (std::size_t i = 0; i < L.seal_z_count; ++i) s[L.seal_z + i] = seal_->state_scale();
   for (std::size_t i = 0; i < L.guide_z_count; ++i) s[L.guide_z + i] = guide_->state_scale();
@@ -274,7 +287,8 @@ PlantOutputs Plant::outputs(const Mode& mode, std::span<const double> x) const {
   if (contacts_ == 2) out.guide_friction_N = reported(kGuide);
   out.drive_force_N = drive_force<double>(kSeal, x);
   const auto [W1, W2] = mass_flows(x[layout_.P1], x[layout_.P2]);
-  out.W1_kg_per_s = W1;
+  const bool ideal_S1 = !layout_.has_supply_line() && !layout_.has_valve_opening();
+  out.W1_kg_per_s = ideal_S1 ? W1 : valve1_inflow(x);
   out.W2_kg_per_s = W2;
   out.piston_stuck = !moving(mode_of(mode, kSeal));
   return out;

@@ -65,12 +65,38 @@ T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x
                                       plant_detail::direction_of(m), z, dz.data());
 }
 
+// What S1 draws from: the supply line's pressure P0 when it has a volume, else the
+// regulator's Ps itself (docs/model.md, "Supply line").
+template <typename T>
+T Plant::valve1_upstream(std::span<const T> x) const {
+  return layout_.has_supply_line() ? x[layout_.P0] : T(supply_Pa_);
+}
+
+// Mass flow through S1 by the valve law, scaled by S1's opening fraction while the solenoid
+// valve opens (valve.S1_opening = lag): the flow is proportional to the effective area.
+template <typename T>
+T Plant::valve1_flow(std::span<const T> x) const {
+  const T W1 = valve1_->mass_flow(valve1_upstream(x), x[layout_.P1]);
+  if (layout_.has_valve_opening()) return W1 * x[layout_.S1_open];
+  return W1;
+}
+
+// Mass flow through S1 into chamber 1; with the energy equation, back-flow leaves chamber 1 at
+// its own temperature T1 and passes sqrt(T_supply / T1) times the flow sized at T_supply.
+template <typename T>
+T Plant::valve1_inflow(std::span<const T> x) const {
+  using std::sqrt;
+  T W1 = valve1_flow(x);
+  if (layout_.has_temperatures() && W1 < 0.0) W1 = W1 * sqrt(T_supply_ / x[layout_.T1]);
+  return W1;
+}
+
 template <typename T>
 T Plant::head_chamber_rate(std::span<const T> x) const {
   const auto& L = layout_;
   const double k = polytropic_exponent_;
   const T V1 = geometry_.volume_head_m3(x[L.x]);
-  const T W1 = valve1_->mass_flow(T(supply_Pa_), x[L.P1]);
+  const T W1 = valve1_flow(x);
   return k * RT_ / V1 * W1 - k * x[L.P1] * A1_ / V1 * x[L.v];  // eq. (2)
 }
 
@@ -105,12 +131,8 @@ void Plant::chamber_energy_rates(std::span<const T> x, std::span<T> dxdt) const 
   const auto& L = layout_;
   const T& T1 = x[L.T1];
   const T& T2 = x[L.T2];
-  T W1 = valve1_->mass_flow(T(supply_Pa_), x[L.P1]);
-  T H1 = W1 * T_supply_;
-  if (W1 < 0.0) {  // back-flow out of chamber 1
-    W1 = W1 * sqrt(T_supply_ / T1);
-    H1 = W1 * T1;
-  }
+  const T W1 = valve1_inflow(x);
+  const T H1 = W1 < 0.0 ? T(W1 * T1) : T(W1 * T_supply_);  // back-flow carries T1 out
   T W2 = valve2_->mass_flow(x[L.P2], T(ambient_Pa_));
   T H2 = -W2 * T_supply_;  // reversed: atmosphere (at the supply temperature) flows in
   if (W2 >= 0.0) {
@@ -135,6 +157,11 @@ void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) 
     dxdt[L.P1] = head_chamber_rate(x);
     dxdt[L.P2] = rod_chamber_rate(x);
   }
+  // The line loses to chamber 1 exactly what chamber 1 gains (mass conservation).
+  if (L.has_supply_line()) dxdt[L.P0] = line_->pressure_rate(x[L.P0], valve1_inflow(x));
+  // First-order opening of S1 from the switch at t = 0: a = 1 - exp(-t / tau).
+  if (L.has_valve_opening())
+    dxdt[L.S1_open] = (1.0 - x[L.S1_open]) / valve1_time_constant_s_;
 
   const auto body = [&](std::size_t contact, std::size_t ix, std::size_t iv, std::size_t iz,
                         std::size_t nz, double mass) {

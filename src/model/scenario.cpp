@@ -33,6 +33,23 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
   }
 }
 
+// The keys' own ranges, again for scenarios built in code rather than from keys.
+void check_supply_line(const SupplyLineParams& line) {
+  if (!(line.volume_m3 >= 0.0)) {
+    throw Error("supply_line.volume_cm3",
+                fmt::format("{} cm^3 is out of range: expected >= 0", line.volume_m3 * 1e6));
+  }
+  if (line.enabled() && !(line.regulator_S_m2 > 0.0)) {
+    throw Error("supply_line.regulator_S_mm2",
+                fmt::format("{} mm^2 is out of range: expected > 0", line.regulator_S_m2 * 1e6));
+  }
+  if (!(line.polytropic_exponent >= 1.0 && line.polytropic_exponent <= 1.67)) {
+    throw Error("supply_line.polytropic_exponent",
+                fmt::format("{} is out of range: expected >= 1 and <= 1.67",
+                            line.polytropic_exponent));
+  }
+}
+
 }  // namespace
 
 double CircuitParams::S1() const {
@@ -59,6 +76,12 @@ void Scenario::validate() const {
                             valve.critical_ratio));
   }
   check_friction(friction, "friction.");
+  check_supply_line(supply_line);
+  if (valve_opening.lagged() && !(valve_opening.time_constant_s > 0.0)) {
+    throw Error("valve.S1_opening_time_ms",
+                fmt::format("{} ms is out of range: expected > 0",
+                            valve_opening.time_constant_s * 1e3));
+  }
   if (load.coupling == LoadCoupling::kSpring)
     check_friction(load.guide_friction, "guide_friction.");
   // The record is held in memory (a dozen channels of doubles): refuse up front what cannot

@@ -183,6 +183,18 @@ std::vector<KeySpec> build_keys() {
       "thermal.wall_temperature_K", "K", "cylinder wall temperature (chamber_model = energy)",
       1.0, kPositive, [](auto& s) -> auto& { return s.thermal.wall_temperature_K; }));
   k.push_back(number(
+      "supply_line.volume_cm3", "cm^3",
+      "volume between the regulator and S1 (tube + manifold); 0: ideal supply, no state P0",
+      1e-6, kNonNegative, [](auto& s) -> auto& { return s.supply_line.volume_m3; }));
+  k.push_back(number(
+      "supply_line.regulator_S_mm2", "mm^2",
+      "effective sectional area of the regulator feeding the line (volume_cm3 > 0)", 1e-6,
+      kPositive, [](auto& s) -> auto& { return s.supply_line.regulator_S_m2; }));
+  k.push_back(number(
+      "supply_line.polytropic_exponent", "-",
+      "n of the line's pressure equation: 1.0 isothermal, 1.4 adiabatic (volume_cm3 > 0)", 1.0,
+      Range{1.0, 1.67}, [](auto& s) -> auto& { return s.supply_line.polytropic_exponent; }));
+  k.push_back(number(
       "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.cylinder.bore_m; }));
   k.push_back(number(
@@ -212,6 +224,14 @@ std::vector<KeySpec> build_keys() {
       "valve.laminar_ratio", "-",
       "pressure ratio above which the flow is linear in the pressure difference", 1.0,
       Range{0.9, 1.0, false, true}, [](auto& s) -> auto& { return s.valve.laminar_ratio; }));
+  k.push_back(word<ValveOpening>(
+      "valve.S1_opening",
+      "instant: S1 fully open at the switch; lag: S1's area opens as 1 - exp(-t / "
+      "S1_opening_time_ms) (the solenoid valve's response)",
+      {"instant", "lag"}, [](auto& s) -> auto& { return s.valve_opening.kind; }));
+  k.push_back(number(
+      "valve.S1_opening_time_ms", "ms", "time constant of S1's opening (S1_opening = lag)", 1e-3,
+      kPositive, [](auto& s) -> auto& { return s.valve_opening.time_constant_s; }));
   add_friction_keys(
       k, "friction.", "piston seal", [](auto& s) -> auto& { return s.friction; });
   k.push_back(number(

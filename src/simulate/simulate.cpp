@@ -54,6 +54,8 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
     ts.add_channel("T1", "K");
     ts.add_channel("T2", "K");
   }
+  if (L.has_supply_line()) ts.add_channel("P0", "Pa");
+  if (L.has_valve_opening()) ts.add_channel("S1_open", "-");
   ts.add_channel("stuck", "-");
 
   std::vector<double> row;
@@ -67,6 +69,8 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
       for (std::size_t i = 0; i < L.guide_z_count; ++i) row.push_back(x[L.guide_z + i]);
     }
     if (L.has_temperatures()) row.insert(row.end(), {x[L.T1], x[L.T2]});
+    if (L.has_supply_line()) row.push_back(x[L.P0]);
+    if (L.has_valve_opening()) row.push_back(x[L.S1_open]);
     row.push_back(out.piston_stuck ? 1.0 : 0.0);
     ts.append(row);
   };

@@ -53,6 +53,7 @@ class SteadyMotion {
         rates_(state_.size()) {
     state_[L_.x] = x0_;
     if (L_.has_load_body()) state_[L_.load_x] = x0_;
+    if (L_.has_valve_opening()) state_[L_.S1_open] = 1.0;  // steady motion: S1 fully open
   }
 
   // Speed at which chamber 2's outflow through S2 balances its shrinking volume, eq. (3) = 0.

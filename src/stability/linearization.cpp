@@ -21,6 +21,14 @@ ReducedLayout reduced_layout(const Plant& plant) {
     throw Error("thermal.chamber_model",
                 "the linearization does not include the chamber temperatures yet; use polytropic");
   }
+  if (L.has_valve_opening()) {
+    throw Error("valve.S1_opening",
+                "the linearization assumes S1 fully open; use \"instant\"");
+  }
+  if (L.has_supply_line()) {
+    throw Error("supply_line.volume_cm3",
+                "the linearization does not include the supply line yet; use 0 (ideal supply)");
+  }
   ReducedLayout r;
   if (L.seal_z_count == 1) r.z = r.size++;
   if (L.has_load_body()) {

@@ -127,6 +127,12 @@ class Plant final : public HybridSystem {
                                      const T& W_in, const T& H_in, const T& A_wall,
                                      T& dTc) const;
   template <typename T>
+  [[nodiscard]] T valve1_upstream(std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T valve1_flow(std::span<const T> x) const;
+  template <typename T>
+  [[nodiscard]] T valve1_inflow(std::span<const T> x) const;
+  template <typename T>
   [[nodiscard]] T drive_force(std::size_t contact, std::span<const T> x) const;
   template <typename T>
   [[nodiscard]] BasicFrictionInput<T> friction_input(std::size_t contact,
@@ -156,6 +162,8 @@ class Plant final : public HybridSystem {
   std::unique_ptr<FrictionModel> guide_;
   std::optional<Orifice> valve1_;  // supply -> chamber 1 (S1)
   std::optional<Orifice> valve2_;  // chamber 2 -> atmosphere (S2)
+  double valve1_time_constant_s_ = 0.0;  // S1's opening lag tau (valve.S1_opening = lag)
+  std::optional<SupplyLine> line_;  // regulator -> line volume -> S1 (supply_line.volume_cm3 > 0)
   double A1_ = 0.0;
   double A2_ = 0.0;
   double piston_mass_ = 0.0;

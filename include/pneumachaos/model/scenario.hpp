@@ -9,6 +9,7 @@
 #include "pneumachaos/core/run_settings.hpp"
 #include "pneumachaos/model/cylinder.hpp"
 #include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/supply_line.hpp"
 #include "pneumachaos/model/valve_flow.hpp"
 
 namespace pneumachaos {
@@ -66,6 +67,19 @@ struct ThermalParams {
   double wall_temperature_K = 293.15;  ///< cylinder wall, taken constant (large heat capacity)
 };
 
+enum class ValveOpening {
+  kInstant,  ///< S1 fully open from the switch at t = 0 (the paper's model)
+  kLag,      ///< S1's area follows a first-order lag after the switch
+};
+
+/// The solenoid valve S1's own opening (docs/model.md, "Valves"): its effective area grows as
+/// S1 (1 - exp(-t / tau)) after the switch, through a state a = opening fraction. Off by default.
+struct ValveOpeningParams {
+  ValveOpening kind = ValveOpening::kInstant;
+  double time_constant_s = 0.010;  ///< tau; catalogue response times of 5-30 ms
+  [[nodiscard]] bool lagged() const { return kind == ValveOpening::kLag; }
+};
+
 struct Scenario {
   GasConstants gas;
   double polytropic_exponent = 1.4;  ///< k of eqs. (2)-(3): 1.4 adiabatic, 1.0 isothermal
@@ -75,10 +89,12 @@ struct Scenario {
   CylinderGeometry cylinder;
   CircuitParams circuit;
   ValveLaw valve;
+  ValveOpeningParams valve_opening;
   FrictionParams friction;
   LoadParams load;
   VariationParams variation;
   ThermalParams thermal;
+  SupplyLineParams supply_line;  ///< off by default: the ideal supply of eqs. (2)-(3)
   RunParams run;
 
   [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }

@@ -23,6 +23,8 @@ struct StateLayout {
   std::size_t guide_z_count = 0;
   std::size_t T1 = kNone;  ///< head-side temperature [K] (energy equation only)
   std::size_t T2 = kNone;  ///< rod-side temperature [K]
+  std::size_t S1_open = kNone;  ///< opening fraction of S1, 0..1 (valve.S1_opening = lag only)
+  std::size_t P0 = kNone;  ///< supply-line pressure [Pa abs] (supply_line.volume_cm3 > 0 only)
   std::size_t size = 4;
 
   struct Entry {
@@ -35,6 +37,8 @@ struct StateLayout {
   std::size_t append(const std::string& name, const std::string& unit, std::size_t count = 1);
   [[nodiscard]] bool has_load_body() const { return load_x != kNone; }
   [[nodiscard]] bool has_temperatures() const { return T1 != kNone; }
+  [[nodiscard]] bool has_supply_line() const { return P0 != kNone; }
+  [[nodiscard]] bool has_valve_opening() const { return S1_open != kNone; }
 };
 
 }  // namespace pneumachaos
