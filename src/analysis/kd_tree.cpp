@@ -13,10 +13,11 @@ KdTree::KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_siz
   id_.resize(n);
   std::iota(id_.begin(), id_.end(), std::size_t{0});
   if (n == 0) return;
-  lo_.resize(dim_);
-  hi_.resize(dim_);
   nodes_.reserve(2 * (n / leaf_ + 1));
-  build(0, n);
+  std::vector<double> root(2 * dim_);
+  const Box box{root.data(), root.data() + dim_};
+  bound(0, n, box);
+  build(0, n, box, 0);
 }
 
 void KdTree::swap_rows(std::size_t a, std::size_t b) {
@@ -26,52 +27,72 @@ void KdTree::swap_rows(std::size_t a, std::size_t b) {
   std::swap(id_[a], id_[b]);
 }
 
+// The box of rows [first, last) in one pass.
+void KdTree::bound(std::size_t first, std::size_t last, Box box) const {
+  std::fill(box.lo, box.lo + dim_, std::numeric_limits<double>::infinity());
+  std::fill(box.hi, box.hi + dim_, -std::numeric_limits<double>::infinity());
+  for (const double* p = points_.data() + first * dim_; p != points_.data() + last * dim_;
+       p += dim_) {
+    for (std::size_t d = 0; d < dim_; ++d) {
+      box.lo[d] = std::min(box.lo[d], p[d]);
+      box.hi[d] = std::max(box.hi[d], p[d]);
+    }
+  }
+}
+
 // Rows [first, last) reordered so that those with coordinate `cut` below `value` come first;
-// returns the first row at or above it, and the two sides' extents along the cut. One pass,
-// each row moved at most once.
+// returns the first row at or above it. Each row is classified once (and moved at most once),
+// and its coordinates go into its side's box as it is: the children's boxes come with the
+// partition instead of a second pass over their rows at the next level.
 std::size_t KdTree::partition(std::size_t first, std::size_t last, std::size_t cut, double value,
-                              double& left_high, double& right_low) {
+                              Box left, Box right) {
+  for (const Box& b : {left, right}) {
+    std::fill(b.lo, b.lo + dim_, std::numeric_limits<double>::infinity());
+    std::fill(b.hi, b.hi + dim_, -std::numeric_limits<double>::infinity());
+  }
+  const auto add = [&](std::size_t row, Box b) {
+    const double* p = &points_[row * dim_];
+    for (std::size_t d = 0; d < dim_; ++d) {
+      b.lo[d] = std::min(b.lo[d], p[d]);
+      b.hi[d] = std::max(b.hi[d], p[d]);
+    }
+  };
   const auto at = [&](std::size_t row) { return points_[row * dim_ + cut]; };
   std::size_t i = first, j = last;
   while (true) {
-    for (; i < j && at(i) < value; ++i) left_high = std::max(left_high, at(i));
-    for (; i < j && at(j - 1) >= value; --j) right_low = std::min(right_low, at(j - 1));
+    for (; i < j && at(i) < value; ++i) add(i, left);
+    for (; i < j && at(j - 1) >= value; --j) add(j - 1, right);
     if (i >= j) return i;
     swap_rows(i, j - 1);
   }
 }
 
-std::uint32_t KdTree::build(std::size_t first, std::size_t last) {
+// `box`: the bounding box of rows [first, last); `depth` picks the scratch of the children's.
+std::uint32_t KdTree::build(std::size_t first, std::size_t last, Box box, std::size_t depth) {
   const auto n = static_cast<std::uint32_t>(nodes_.size());
   nodes_.push_back(Node{first, last});
   if (last - first <= leaf_) return n;
-  // Cut the coordinate of widest spread; the cell's box in one pass over its rows.
-  std::fill(lo_.begin(), lo_.end(), std::numeric_limits<double>::infinity());
-  std::fill(hi_.begin(), hi_.end(), -std::numeric_limits<double>::infinity());
-  for (const double* p = points_.data() + first * dim_; p != points_.data() + last * dim_;
-       p += dim_) {
-    for (std::size_t d = 0; d < dim_; ++d) {
-      lo_[d] = std::min(lo_[d], p[d]);
-      hi_[d] = std::max(hi_[d], p[d]);
-    }
-  }
+  // Cut the coordinate of widest spread.
   std::size_t cut = 0;
   for (std::size_t d = 1; d < dim_; ++d) {
-    if (hi_[d] - lo_[d] > hi_[cut] - lo_[cut]) cut = d;
+    if (box.hi[d] - box.lo[d] > box.hi[cut] - box.lo[cut]) cut = d;
   }
-  const double widest = hi_[cut] - lo_[cut], cut_lo = lo_[cut];
+  const double widest = box.hi[cut] - box.lo[cut], cut_lo = box.lo[cut];
   if (!(widest > 0.0)) return n;  // identical points: nothing to split
   // The middle of the spread, as nanoflann's middle split: one partition pass per level
   // instead of a median search. Neither side is empty while lo < split <= hi (rounding can
   // put the middle of two adjacent doubles on lo itself).
   double split = cut_lo + 0.5 * widest;
   if (!(split > cut_lo)) split = cut_lo + widest;
-  double left_high = cut_lo, right_low = hi_[cut];
-  const std::size_t mid = partition(first, last, cut, split, left_high, right_low);
-  nodes_[n].left_high = left_high;
-  nodes_[n].right_low = right_low;
-  const std::uint32_t left = build(first, mid);
-  const std::uint32_t right = build(mid, last);
+  if (boxes_.size() <= depth) boxes_.emplace_back(4 * dim_);
+  double* scratch = boxes_[depth].data();
+  const Box left_box{scratch, scratch + dim_}, right_box{scratch + 2 * dim_, scratch + 3 * dim_};
+  const std::size_t mid = partition(first, last, cut, split, left_box, right_box);
+  // The children's extents along the cut (what the search prunes with).
+  nodes_[n].left_high = left_box.hi[cut];
+  nodes_[n].right_low = right_box.lo[cut];
+  const std::uint32_t left = build(first, mid, left_box, depth + 1);
+  const std::uint32_t right = build(mid, last, right_box, depth + 1);
   nodes_[n].left = left;
   nodes_[n].right = right;
   nodes_[n].cut = cut;
