@@ -73,6 +73,29 @@ std::size_t first_repeat_length(std::span<const double> x) {
   return length;
 }
 
+// Vectors 0 .. points-1 in lexicographic order of their coordinates, equal vectors by time.
+// The first coordinate travels with the index, so most comparisons read one contiguous array
+// instead of gathering coordinates from the series (this sort was the most expensive part of
+// an index on a record with rests, 2.6 % of a sweep: docs/performance.md); the order is the
+// same total order as comparing whole vectors.
+std::vector<std::size_t> lexicographic_order(const DelayEmbedding& e, std::size_t points) {
+  std::vector<std::pair<double, std::size_t>> keyed(points);
+  for (std::size_t i = 0; i < points; ++i) keyed[i] = {e.coordinate(i, 0), i};
+  const auto less = [&](const std::pair<double, std::size_t>& a,
+                        const std::pair<double, std::size_t>& b) {
+    if (a.first != b.first) return a.first < b.first;
+    for (std::size_t d = 1; d < e.dimension(); ++d) {
+      const double ca = e.coordinate(a.second, d), cb = e.coordinate(b.second, d);
+      if (ca != cb) return ca < cb;
+    }
+    return a.second < b.second;
+  };
+  std::sort(keyed.begin(), keyed.end(), less);
+  std::vector<std::size_t> order(points);
+  for (std::size_t n = 0; n < points; ++n) order[n] = keyed[n].second;
+  return order;
+}
+
 // Distinct delay vectors and the times at which each occurs. Records that rest (a stuck
 // piston's v = 0) or are quantised repeat one vector thousands of times; the tree holds each
 // distinct vector once, so a query does not wade through its repeats.
@@ -92,16 +115,7 @@ struct Groups {
       count = points;
       return;
     }
-    std::vector<std::size_t> order(points);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    const auto less = [&](std::size_t a, std::size_t b) {
-      for (std::size_t d = 0; d < e.dimension(); ++d) {
-        const double ca = e.coordinate(a, d), cb = e.coordinate(b, d);
-        if (ca != cb) return ca < cb;
-      }
-      return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
+    const std::vector<std::size_t> order = lexicographic_order(e, points);
     for (std::size_t n = 0; n < order.size(); ++n) {
       if (n == 0 || e.distance2(order[n - 1], order[n]) != 0.0) {
         start.push_back(member.size());
