@@ -20,11 +20,10 @@ KdTree::KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_siz
   build(0, n, box, 0);
 }
 
-void KdTree::swap_rows(std::size_t a, std::size_t b) {
-  std::swap_ranges(points_.begin() + static_cast<std::ptrdiff_t>(a * dim_),
-                   points_.begin() + static_cast<std::ptrdiff_t>(a * dim_ + dim_),
-                   points_.begin() + static_cast<std::ptrdiff_t>(b * dim_));
-  std::swap(id_[a], id_[b]);
+std::vector<std::size_t> KdTree::storage_rank() const {
+  std::vector<std::size_t> rank(id_.size());
+  for (std::size_t row = 0; row < id_.size(); ++row) rank[id_[row]] = row;
+  return rank;
 }
 
 // The box of rows [first, last) in one pass.
@@ -43,27 +42,47 @@ void KdTree::bound(std::size_t first, std::size_t last, Box box) const {
 // Rows [first, last) reordered so that those with coordinate `cut` below `value` come first;
 // returns the first row at or above it. Each row is classified once (and moved at most once),
 // and its coordinates go into its side's box as it is: the children's boxes come with the
-// partition instead of a second pass over their rows at the next level.
+// partition instead of a second pass over their rows at the next level. As in the search, the
+// usual dimensions get the loop with the dimension fixed at compile time.
 std::size_t KdTree::partition(std::size_t first, std::size_t last, std::size_t cut, double value,
                               Box left, Box right) {
-  for (const Box& b : {left, right}) {
-    std::fill(b.lo, b.lo + dim_, std::numeric_limits<double>::infinity());
-    std::fill(b.hi, b.hi + dim_, -std::numeric_limits<double>::infinity());
+  switch (dim_) {
+    case 1: return partition_in<1>(first, last, cut, value, left, right);
+    case 2: return partition_in<2>(first, last, cut, value, left, right);
+    case 3: return partition_in<3>(first, last, cut, value, left, right);
+    case 4: return partition_in<4>(first, last, cut, value, left, right);
+    case 5: return partition_in<5>(first, last, cut, value, left, right);
+    case 6: return partition_in<6>(first, last, cut, value, left, right);
+    case 7: return partition_in<7>(first, last, cut, value, left, right);
+    case 8: return partition_in<8>(first, last, cut, value, left, right);
+    default: return partition_in<0>(first, last, cut, value, left, right);
   }
+}
+
+template <std::size_t Dim>
+std::size_t KdTree::partition_in(std::size_t first, std::size_t last, std::size_t cut,
+                                 double value, Box left, Box right) {
+  const std::size_t dim = Dim > 0 ? Dim : dim_;
+  for (const Box& b : {left, right}) {
+    std::fill(b.lo, b.lo + dim, std::numeric_limits<double>::infinity());
+    std::fill(b.hi, b.hi + dim, -std::numeric_limits<double>::infinity());
+  }
+  double* const points = points_.data();
   const auto add = [&](std::size_t row, Box b) {
-    const double* p = &points_[row * dim_];
-    for (std::size_t d = 0; d < dim_; ++d) {
+    const double* p = points + row * dim;
+    for (std::size_t d = 0; d < dim; ++d) {
       b.lo[d] = std::min(b.lo[d], p[d]);
       b.hi[d] = std::max(b.hi[d], p[d]);
     }
   };
-  const auto at = [&](std::size_t row) { return points_[row * dim_ + cut]; };
+  const auto at = [&](std::size_t row) { return points[row * dim + cut]; };
   std::size_t i = first, j = last;
   while (true) {
     for (; i < j && at(i) < value; ++i) add(i, left);
     for (; i < j && at(j - 1) >= value; --j) add(j - 1, right);
     if (i >= j) return i;
-    swap_rows(i, j - 1);
+    std::swap_ranges(points + i * dim, points + i * dim + dim, points + (j - 1) * dim);
+    std::swap(id_[i], id_[j - 1]);
   }
 }
 

@@ -17,6 +17,9 @@ class KdTree {
   /// `coords`: point k at coords[k * dim .. k * dim + dim); the tree reports k.
   KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = 16);
 
+  /// rank[k]: the place of point k in the tree's storage order (leaf by leaf).
+  [[nodiscard]] std::vector<std::size_t> storage_rank() const;
+
   /// Offers every point that may be closer than result.worstDist() to result.addPoint(d2, k).
   template <class Result>
   void search(const double* query, Result& result) const {
@@ -53,9 +56,11 @@ class KdTree {
 
   std::uint32_t build(std::size_t first, std::size_t last, Box box, std::size_t depth);
   void bound(std::size_t first, std::size_t last, Box box) const;
-  void swap_rows(std::size_t a, std::size_t b);
   std::size_t partition(std::size_t first, std::size_t last, std::size_t cut, double value,
                         Box left, Box right);
+  template <std::size_t Dim>
+  std::size_t partition_in(std::size_t first, std::size_t last, std::size_t cut, double value,
+                           Box left, Box right);
 
   // Dim > 0: the dimension as a constant; 0: dim_ at run time.
   template <std::size_t Dim, class Result>
