@@ -77,9 +77,15 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   const std::size_t blocks = o.jackknife_blocks;
   BlockSums bs{std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0)),
                std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
+  std::vector<std::size_t> references;
+  for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
+  // All neighbours first (searched in the tree's order: docs/performance.md), then the sums
+  // in the references' order, so every sum adds the same terms in the same order as before.
+  const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1);
-  for (std::size_t i = p.margin; i < p.usable; i += stride) {
-    const Neighbour nb = index.nearest(i, o.theiler);
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    const std::size_t i = references[r];
+    const Neighbour& nb = neighbours[r];
     if (nb.index >= p.usable || nb.index < p.margin) continue;
     const std::size_t b = std::min(blocks - 1, (i * blocks) / p.usable);
     // The neighbour's series, shifted by its (constant) offset: interpolated once per sample
