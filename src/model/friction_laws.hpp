@@ -27,17 +27,39 @@ T texture_factor(const P& p, const T& position_m) {
   return f;
 }
 
+/// A friction level with its pressure dependence, times the texture factor `texture`.
+template <typename T, typename Q>
+T textured_level_N(const Q& level_N, const Q& gain_N_per_Pa, const T& gauge_sum_Pa,
+                   const T& texture) {
+  return (level_N + gain_N_per_Pa * gauge_sum_Pa) * texture;
+}
+
 /// Fc with its pressure dependence and texture (docs/model.md).
 template <typename T, typename P>
 T coulomb_N(const P& p, const BasicFrictionInput<T>& in) {
-  return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *
-         texture_factor(p, in.position_m);
+  return textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa,
+                          texture_factor(p, in.position_m));
 }
 
 /// Fs, likewise.
 template <typename T, typename P>
 T static_N(const P& p, const BasicFrictionInput<T>& in) {
-  return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(p, in.position_m);
+  return textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa,
+                          texture_factor(p, in.position_m));
+}
+
+/// Fc and Fs together: the texture's sines, the bulk of a friction evaluation on a textured
+/// bore (docs/performance.md), are summed once for both.
+template <typename T>
+struct Levels {
+  T coulomb_N;
+  T static_N;
+};
+template <typename T, typename P>
+Levels<T> levels_N(const P& p, const BasicFrictionInput<T>& in) {
+  const T texture = texture_factor(p, in.position_m);
+  return {textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa, texture),
+          textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa, texture)};
 }
 
 /// exp(-(|speed|/vs)^delta), the Stribeck drop's weight.
@@ -66,8 +88,8 @@ T stribeck_weight(const P& p, const T& speed) {
 /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
 template <typename T, typename P>
 T stribeck_level_N(const P& p, const BasicFrictionInput<T>& in, const T& speed) {
-  const T fc = coulomb_N(p, in);
-  return fc + (static_N(p, in) - fc) * stribeck_weight(p, speed);
+  const Levels<T> f = levels_N(p, in);
+  return f.coulomb_N + (f.static_N - f.coulomb_N) * stribeck_weight(p, speed);
 }
 
 /// Sliding force of the stiction models in `direction` (+1/-1): `classic`, paper eq. (4),
@@ -104,8 +126,8 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   T speed = d * in.v_m_per_s;
   if (speed < 0.0) speed = T(0.0);
   ds = (stribeck_weight(p, speed) - s) / p.lag_time_s;
-  const T fc = coulomb_N(p, in);
-  return d * (fc + (static_N(p, in) - fc) * s + p.viscous_Ns_per_m * speed);
+  const Levels<T> f = levels_N(p, in);
+  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.viscous_Ns_per_m * speed);
 }
 
 /// Rates of the internal states while the contact rests: LuGre's bristles hold still; the
