@@ -1,6 +1,8 @@
 // Simulated seconds per wall second for a 10 s run at 1 kHz output on one core: the simple
 // rig (one rigid mass, Stribeck seal) sliding and in stick-slip, LuGre on both steppers, and
-// the default two-mass virtual rig.
+// the default two-mass virtual rig, plain and as a sweep runs it (textured bore). Each prints
+// its right-hand-side evaluations and steps per run; StepControl compares the step-size
+// controllers in one process (docs/performance.md, "Simulation (second round)").
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
 #include <benchmark/benchmark.h>
 
@@ -96,9 +98,33 @@ void BM_VirtualRigTextured(benchmark::State& state) {
   count_work(state, last);
 }
 
+// The default rig integrated without output, with the default step-size controller
+// (Boost.Odeint's, argument 0) and Hairer's PI controller (1, tried and not adopted:
+// docs/performance.md), in one process.
+void BM_VirtualRigStepControl(benchmark::State& state) {
+  Scenario s = default_scenario();
+  s.run.duration_s = 10.0;
+  const Plant plant(s);
+  IntegratorOptions io = integrator_options(s.run);
+  io.sample_rate_Hz = 0.0;
+  io.record_events = false;
+  const bool previous = state.range(0) == 0;  // the default
+  io.step_control = previous ? StepControl::kOdeint : StepControl::kPI;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    std::vector<double> x = plant.initial_state();
+    Mode mode = plant.initial_mode(x, 0.0);
+    last = integrate_hybrid(plant, x, mode, io, {});
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.SetLabel(previous ? "odeint controller (default)" : "PI controller (option)");
+  count_work(state, last);
+}
+
 BENCHMARK(BM_Sliding)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigChaotic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigTextured)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigStepControl)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StickSlip)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlidingLuGre)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlidingLuGreRosenbrock)->Unit(benchmark::kMillisecond);
