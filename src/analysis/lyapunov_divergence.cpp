@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "divergence_uncertainty.hpp"
 #include "pneumachaos/analysis/continuous_alignment.hpp"
 #include "pneumachaos/analysis/linear_region.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
@@ -18,6 +19,9 @@ void DivergenceOptions::validate(std::size_t n) const {
   if (n < 100) throw Error("lyapunov", fmt::format("{} samples: at least 100 are needed", n));
   if (!(slope_tolerance > 0.0)) throw Error("lyapunov.slope_tolerance", "must be positive");
   if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
+  if (segments < 2 || segments > jackknife_blocks) {
+    throw Error("lyapunov.segments", "must be between 2 and jackknife_blocks");
+  }
 }
 
 namespace {
@@ -112,10 +116,12 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   return bs;
 }
 
-// Jackknife over blocks of references on the chosen window, plus the change when the window
-// is narrowed by one spacing at either end (the choice of window is part of the estimate);
-// per step.
-double slope_uncertainty(const BlockSums& bs, const DivergenceResult& r, std::size_t spacing) {
+// Three parts, in quadrature (docs/analysis.md "Divergence exponent's uncertainty"): the
+// jackknife over blocks of references on the chosen window; the change when the window is
+// narrowed by one spacing at either end; and the spread of the exponent fitted separately on
+// contiguous segments of the record, each with its own window. Per step; fills the segments.
+double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const DivergenceOptions& o,
+                         DivergenceResult& r) {
   const std::size_t blocks = bs.sum.size();
   std::vector<double> slopes;
   for (std::size_t b = 0; b < blocks; ++b) {
@@ -131,7 +137,12 @@ double slope_uncertainty(const BlockSums& bs, const DivergenceResult& r, std::si
     const double c = fit_line(r.curve, r.fit_first, r.fit_last - spacing).slope;
     window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));
   }
-  return std::hypot(jack, window);
+  const detail::SegmentSlopes seg =
+      detail::segment_slopes(bs.sum, bs.count, o.segments, spacing, o.slope_tolerance,
+                             r.fit_first, r.fit_last);
+  r.segment_slopes_per_step = seg.slopes;
+  r.segments_without_region = seg.without_region;
+  return std::sqrt(jack * jack + window * window + seg.standard_error * seg.standard_error);
 }
 
 }  // namespace
@@ -155,7 +166,7 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   r.slope_per_step = region.slope;
   r.intercept = region.intercept;
   r.lambda_per_s = region.slope * rate_Hz;
-  r.uncertainty_per_s = slope_uncertainty(sums, r, spacing) * rate_Hz;
+  r.uncertainty_per_s = slope_uncertainty(sums, spacing, o, r) * rate_Hz;
   return r;
 }
 
