@@ -107,11 +107,12 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
       const double segment_min = seg.empty() ? 0.0 : *std::min_element(seg.begin(), seg.end());
       const double segment_max = seg.empty() ? 0.0 : *std::max_element(seg.begin(), seg.end());
       out += fmt::format(
-          "  divergence curve: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), fit {:.4g}..{:.4g} s; "
-          "on {} segments {:.3g} .. {:.3g} 1/s\n",
+          "  divergence curve: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), fit {:.4g}..{:.4g} s (slope "
+          "alone +- {:.2g}); on {} segments {:.3g} .. {:.3g} 1/s\n",
           r.divergence.lambda_per_s, r.divergence.uncertainty_per_s,
           bits(r.divergence.lambda_per_s), r.divergence.fit_first / r.rate_Hz,
-          r.divergence.fit_last / r.rate_Hz, r.divergence.segment_slopes_per_step.size(),
+          r.divergence.fit_last / r.rate_Hz, r.divergence.slope_uncertainty_per_s,
+          r.divergence.segment_slopes_per_step.size(),
           segment_min * r.rate_Hz, segment_max * r.rate_Hz);
     } else {
       out += "  divergence curve: no rising linear region\n";
@@ -165,6 +166,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["lyapunov"]["divergence"] = {
       {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
       {"uncertainty", number(r.divergence.uncertainty_per_s)},
+      {"slope_uncertainty", number(r.divergence.slope_uncertainty_per_s)},
       {"unit", "1/s"},
       {"value_bits",
        r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},

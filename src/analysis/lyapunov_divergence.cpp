@@ -116,12 +116,9 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   return bs;
 }
 
-// Three parts, in quadrature (docs/analysis.md "Divergence exponent's uncertainty"): the
-// jackknife over blocks of references on the chosen window; the change when the window is
-// narrowed by one spacing at either end; and the spread of the exponent fitted separately on
-// contiguous segments of the record, each with its own window. Per step; fills the segments.
-double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const DivergenceOptions& o,
-                         DivergenceResult& r) {
+// The slope's uncertainty on the chosen window, per step: the jackknife over blocks of
+// references, and the change when the window is narrowed by one spacing at either end.
+double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const DivergenceResult& r) {
   const std::size_t blocks = bs.sum.size();
   std::vector<double> slopes;
   for (std::size_t b = 0; b < blocks; ++b) {
@@ -137,12 +134,21 @@ double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const Diverge
     const double c = fit_line(r.curve, r.fit_first, r.fit_last - spacing).slope;
     window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));
   }
-  const detail::SegmentSlopes seg =
-      detail::segment_slopes(bs.sum, bs.count, o.segments, spacing, o.slope_tolerance,
-                             r.fit_first, r.fit_last);
+  return std::hypot(jack, window);
+}
+
+// The value's uncertainty adds, in quadrature, the spread of the exponent fitted separately
+// on contiguous segments of the record, each with its own window (docs/analysis.md
+// "Divergence exponent's uncertainty"). Fills both uncertainties and the segments.
+void uncertainties(const BlockSums& bs, std::size_t spacing, const DivergenceOptions& o,
+                   double rate_Hz, DivergenceResult& r) {
+  const double slope = slope_uncertainty(bs, spacing, r);
+  const detail::SegmentSlopes seg = detail::segment_slopes(
+      bs.sum, bs.count, o.segments, spacing, o.slope_tolerance, r.fit_first, r.fit_last);
   r.segment_slopes_per_step = seg.slopes;
   r.segments_without_region = seg.without_region;
-  return std::sqrt(jack * jack + window * window + seg.standard_error * seg.standard_error);
+  r.slope_uncertainty_per_s = slope * rate_Hz;
+  r.uncertainty_per_s = std::hypot(slope, seg.standard_error) * rate_Hz;
 }
 
 }  // namespace
@@ -166,7 +172,7 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   r.slope_per_step = region.slope;
   r.intercept = region.intercept;
   r.lambda_per_s = region.slope * rate_Hz;
-  r.uncertainty_per_s = slope_uncertainty(sums, spacing, o, r) * rate_Hz;
+  uncertainties(sums, spacing, o, rate_Hz, r);
   return r;
 }
 

@@ -46,9 +46,14 @@ struct DivergenceResult {
   double slope_per_step = 0.0;
   double intercept = 0.0;
   double lambda_per_s = 0.0;       ///< slope * rate
-  /// Jackknife standard error, the fit window's sensitivity and the segments' spread, in
-  /// quadrature: +-1.96 of it is meant as a 95 % interval.
+  /// The value's uncertainty: the slope's (below) and the spread of the segments' exponents,
+  /// in quadrature; +-1.96 of it is meant as a 95 % interval (docs/analysis.md "Divergence
+  /// exponent's uncertainty").
   double uncertainty_per_s = 0.0;
+  /// The chosen window's slope alone: jackknife standard error over blocks of references and
+  /// the change when the window is narrowed. Says whether the curve rises (the verdict's
+  /// test), not how well the rise measures the exponent.
+  double slope_uncertainty_per_s = 0.0;
   /// Slope of each segment's own curve (per step, record order), on its own linear region or,
   /// without one, on the record's.
   std::vector<double> segment_slopes_per_step;
