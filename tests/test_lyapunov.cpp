@@ -73,6 +73,27 @@ TEST(Divergence, ContinuousTimeAlignmentRemovesTheFlowBias) {
   EXPECT_NEAR(aligned.lambda_per_s / 0.0714, 1.0, 0.05);
 }
 
+// The segments see what the record does along its length: logistic r = 4 (ln 2 per step) for
+// the first half, r = 3.7 (a slower exponent, about 0.35) for the second, shifted by 2 so
+// that no reference finds its neighbour in the other half. The first segment reads ln 2, the
+// last far less (measured: 0.686, 0.686, 0.529 across the junction, 0.355, 0.350 per step),
+// and the value's uncertainty grows beyond the slope's.
+TEST(Divergence, SegmentsFollowAChangeAlongTheRecord) {
+  std::vector<double> x = logistic(5000, 4.0);
+  for (double v : logistic(5000, 3.7)) x.push_back(v + 2.0);
+  DivergenceOptions o;
+  o.dimension = 1;
+  const DivergenceResult r = divergence_exponent(x, 1.0, o);
+  ASSERT_EQ(r.segment_slopes_per_step.size(), 5u);
+  EXPECT_NEAR(r.segment_slopes_per_step.front() / std::log(2.0), 1.0, 0.05);
+  EXPECT_LT(r.segment_slopes_per_step.back(), 0.6);
+  EXPECT_GT(r.uncertainty_per_s, 2.0 * r.slope_uncertainty_per_s);
+  // A stationary record: every segment near ln 2, and the value's uncertainty still covers it.
+  const DivergenceResult s = divergence_exponent(logistic_map(10000), 1.0, o);
+  for (double v : s.segment_slopes_per_step) EXPECT_NEAR(v / std::log(2.0), 1.0, 0.05);
+  EXPECT_GE(s.uncertainty_per_s, s.slope_uncertainty_per_s);
+}
+
 TEST(Divergence, SineSineWithNoiseAndWhiteNoiseHaveNoRisingRegion) {
   for (const auto& x :
        {sine(10000, 10.0, 1000.0), sine(10000, 10.0, 1000.0, 0.05), white_noise(10000)}) {
