@@ -10,6 +10,7 @@
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
+#include "pneumachaos/core/error.hpp"
 #include "reference_series.hpp"
 #include "validation_corpus.hpp"
 
@@ -88,10 +89,24 @@ TEST(Divergence, SegmentsFollowAChangeAlongTheRecord) {
   EXPECT_NEAR(r.segment_slopes_per_step.front() / std::log(2.0), 1.0, 0.05);
   EXPECT_LT(r.segment_slopes_per_step.back(), 0.6);
   EXPECT_GT(r.uncertainty_per_s, 2.0 * r.slope_uncertainty_per_s);
-  // A stationary record: every segment near ln 2, and the value's uncertainty still covers it.
+  // A stationary record: every segment near ln 2.
   const DivergenceResult s = divergence_exponent(logistic_map(10000), 1.0, o);
   for (double v : s.segment_slopes_per_step) EXPECT_NEAR(v / std::log(2.0), 1.0, 0.05);
   EXPECT_GE(s.uncertainty_per_s, s.slope_uncertainty_per_s);
+}
+
+TEST(Divergence, SegmentCountIsChecked) {
+  const auto x = logistic_map(2000);
+  for (std::size_t n : {1u, 11u}) {
+    DivergenceOptions o;
+    o.segments = n;  // 2 .. jackknife_blocks (10)
+    try {
+      divergence_exponent(x, 1.0, o);
+      ADD_FAILURE() << n << " segments accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("lyapunov.segments"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Divergence, SineSineWithNoiseAndWhiteNoiseHaveNoRisingRegion) {
