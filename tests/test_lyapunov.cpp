@@ -215,8 +215,8 @@ std::vector<KnownExponent> coverage_records() {
                  100.0, 0.9056});
     v.push_back({fmt::format("rossler {}", k),
                  rossler_x(10000, 0.1, {1.0 + 0.3 * k, 1.0 - 0.2 * k, 0.0}), 10.0, 0.0714});
-    v.push_back({fmt::format("logistic {}", k), logistic_map(10000, starts[k]), 1.0,
-                 std::log(2.0)});
+    v.push_back(
+        {fmt::format("logistic {}", k), logistic_map(10000, starts[k]), 1.0, std::log(2.0)});
   }
   v.push_back({"henon", henon_map(10000), 1.0, 0.419});
   return v;
@@ -229,16 +229,17 @@ TEST(ExponentUncertainty, NinetyFiveIntervalCoversTheTrueValueOnNinetyPercent) {
     const AnalysisResult r = analyze_series(k.x, k.rate);
     const auto& d = r.divergence;
     const bool din = std::abs(d.lambda_per_s - k.lambda) <= 1.96 * d.uncertainty_per_s;
-    const bool win = r.wolf_run && std::abs(r.wolf.lambda_per_s - k.lambda) <=
-                                       1.96 * r.wolf.uncertainty_per_s;
+    const bool win =
+        r.wolf_run && std::abs(r.wolf.lambda_per_s - k.lambda) <= 1.96 * r.wolf.uncertainty_per_s;
     divergence_in += din;
     wolf_in += win;
-    fmt::print("{:>16}: divergence {:+.4f} +- {:.4f} ({:+.1f} sigma) {}; Wolf {:+.4f} +- {:.4f} "
-               "({:+.1f} sigma) {}\n",
-               k.name, d.lambda_per_s / k.lambda - 1.0, d.uncertainty_per_s / k.lambda,
-               (d.lambda_per_s - k.lambda) / d.uncertainty_per_s, din ? "in" : "OUT",
-               r.wolf.lambda_per_s / k.lambda - 1.0, r.wolf.uncertainty_per_s / k.lambda,
-               (r.wolf.lambda_per_s - k.lambda) / r.wolf.uncertainty_per_s, win ? "in" : "OUT");
+    fmt::print(
+        "{:>16}: divergence {:+.4f} +- {:.4f} ({:+.1f} sigma) {}; Wolf {:+.4f} +- {:.4f} "
+        "({:+.1f} sigma) {}\n",
+        k.name, d.lambda_per_s / k.lambda - 1.0, d.uncertainty_per_s / k.lambda,
+        (d.lambda_per_s - k.lambda) / d.uncertainty_per_s, din ? "in" : "OUT",
+        r.wolf.lambda_per_s / k.lambda - 1.0, r.wolf.uncertainty_per_s / k.lambda,
+        (r.wolf.lambda_per_s - k.lambda) / r.wolf.uncertainty_per_s, win ? "in" : "OUT");
   }
   const auto n = static_cast<int>(records.size());
   fmt::print("coverage of the 95 % interval: divergence {} of {}, Wolf {} of {}\n", divergence_in,

@@ -112,8 +112,8 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
           r.divergence.lambda_per_s, r.divergence.uncertainty_per_s,
           bits(r.divergence.lambda_per_s), r.divergence.fit_first / r.rate_Hz,
           r.divergence.fit_last / r.rate_Hz, r.divergence.slope_uncertainty_per_s,
-          r.divergence.segment_slopes_per_step.size(),
-          segment_min * r.rate_Hz, segment_max * r.rate_Hz);
+          r.divergence.segment_slopes_per_step.size(), segment_min * r.rate_Hz,
+          segment_max * r.rate_Hz);
     } else {
       out += "  divergence curve: no rising linear region\n";
     }
@@ -176,15 +176,17 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
        {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
         {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
       {"aligned_in_time", r.divergence.aligned},
-      {"method", "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
-                 "fit window, segments"}};
+      {"method",
+       "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
+       "fit window, segments"}};
   j["lyapunov"]["divergence"]["status"] = r.divergence_status;
   // The exponent fitted on each contiguous segment of the record (docs/analysis.md
   // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
   std::vector<double> segments;
   for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);
   j["lyapunov"]["divergence"]["segments"] = {
-      {"values", segments}, {"unit", "1/s"},
+      {"values", segments},
+      {"unit", "1/s"},
       {"without_own_linear_region", r.divergence.segments_without_region}};
   if (!r.wolf_status.empty()) {
     j["lyapunov"]["wolf"] = {{"value", r.wolf_run ? number(r.wolf.lambda_per_s) : nullptr},
