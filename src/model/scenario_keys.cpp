@@ -84,6 +84,29 @@ KeySpec word(std::string key, std::string description, std::vector<std::string> 
   return s;
 }
 
+// The generalized Maxwell-slip keys (docs/model.md, "Friction"); the element count must be whole.
+template <typename Ref>
+void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref) {
+  KeySpec count = number(
+      prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)", 1.0,
+      Range{1.0, static_cast<double>(kMaxGmsElements)},
+      [ref](auto& s) -> auto& { return ref(s).gms_elements; });
+  const std::string key = count.info.key;
+  count.set_number = [ref, key](Scenario& sc, double n) {
+    if (n != std::floor(n)) throw Error(key, fmt::format("expected a whole number, got {}", n));
+    ref(sc).gms_elements = static_cast<int>(n);
+  };
+  keys.push_back(std::move(count));
+  keys.push_back(number(
+      prefix + "gms_stiffness_N_per_m", "N/m",
+      "gms: total presliding stiffness, in equal shares over the elements", 1.0, kPositive,
+      [ref](auto& s) -> auto& { return ref(s).gms_stiffness_N_per_m; }));
+  keys.push_back(number(
+      prefix + "gms_attraction_length_um", "um",
+      "gms: sliding distance over which a slipping element reaches its share of the level", 1e-6,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).gms_attraction_length_m; }));
+}
+
 // The same friction keys serve the piston seal ("friction.") and the load guide
 // ("guide_friction."), so they are generated from one list.
 template <typename Ref>
@@ -91,7 +114,7 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
                        const std::string& what, Ref ref) {
   keys.push_back(word<FrictionKind>(
       prefix + "model", "friction model of the " + what,
-      {"classic", "stribeck", "lugre"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
+      {"classic", "stribeck", "lugre", "gms"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
   keys.push_back(number(
       prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
@@ -113,6 +136,7 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
   keys.push_back(number(
       prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  add_gms_keys(keys, prefix, ref);
   keys.push_back(word<FrictionMemory>(
       prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
       {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
