@@ -10,8 +10,10 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/friction.hpp"
+#include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -163,6 +165,51 @@ TEST(FrictionGms, KeysRejectBadValuesNamingTheKey) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
     }
   }
+}
+
+// On the plant the elements are ODE states like LuGre's bristle: a run records each one, needs
+// no stick events, and in steady sliding ends on the model's steady friction.
+TEST(FrictionGms, PlantRunEndsOnTheSteadyCurveWithEveryElementRecorded) {
+  Scenario s = simple_rig_scenario();
+  s.friction.kind = FrictionKind::kGms;
+  s.circuit.S2_m2 = 2.0e-6;  // a wide exhaust: steady sliding on the simple rig
+  const Plant plant(s);
+  ASSERT_EQ(plant.layout().seal_z_count, 4u);
+  const auto r = simulate(plant, s.run);
+  EXPECT_EQ(r.summary.events.stick, 0u);
+  for (const char* name : {"z_gms", "z_gms2", "z_gms3", "z_gms4"})
+    EXPECT_FALSE(r.series.channel(name).values.empty()) << name;
+  const double v = r.series.channel("v").values.back();
+  const double F = r.series.channel("F_friction").values.back();
+  ASSERT_GT(v, 0.01);
+  EXPECT_NEAR(F, plant.seal_friction().steady_force_N({v, 0.0, 0.0}), 1e-6 * F);
+}
+
+// Scenarios built in code are checked against the same ranges when validated.
+TEST(FrictionGms, ValidateRejectsBadParametersNamingTheKey) {
+  const auto key_of = [](const Scenario& s) {
+    try {
+      s.validate();
+    } catch (const Error& e) {
+      return e.where();
+    }
+    return std::string("(accepted)");
+  };
+  Scenario s;
+  s.friction.kind = FrictionKind::kGms;
+  EXPECT_EQ(key_of(s), "(accepted)");
+  Scenario none = s;
+  none.friction.gms_elements = 0;
+  EXPECT_EQ(key_of(none), "friction.gms_elements");
+  Scenario soft = s;
+  soft.friction.gms_stiffness_N_per_m = -1.0;
+  EXPECT_EQ(key_of(soft), "friction.gms_stiffness_N_per_m");
+  Scenario instant = s;
+  instant.friction.gms_attraction_length_m = 0.0;
+  EXPECT_EQ(key_of(instant), "friction.gms_attraction_length_um");
+  Scenario frictionless = s;
+  frictionless.friction.coulomb_N = 0.0;
+  EXPECT_EQ(key_of(frictionless), "friction.Fc_N");
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ const Range kNonNegative{0.0, kInf, false, false};
 struct KeySpec {
   KeyInfo info;
   bool is_word = false;
+  bool whole = false;  // a count: only whole numbers
   double scale = 1.0;  // user unit -> SI
   Range range;
   std::function<void(Scenario&, double)> set_number;
@@ -91,11 +92,8 @@ void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref
       prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)", 1.0,
       Range{1.0, static_cast<double>(kMaxGmsElements)},
       [ref](auto& s) -> auto& { return ref(s).gms_elements; });
-  const std::string key = count.info.key;
-  count.set_number = [ref, key](Scenario& sc, double n) {
-    if (n != std::floor(n)) throw Error(key, fmt::format("expected a whole number, got {}", n));
-    ref(sc).gms_elements = static_cast<int>(n);
-  };
+  count.whole = true;
+  count.set_number = [ref](Scenario& sc, double n) { ref(sc).gms_elements = static_cast<int>(n); };
   keys.push_back(std::move(count));
   keys.push_back(number(
       prefix + "gms_stiffness_N_per_m", "N/m",
@@ -386,6 +384,9 @@ void apply_setting(Scenario& scenario, const std::string& key, const SettingValu
   if (!spec.range.contains(*number)) {
     throw Error(place, fmt::format("{} {} is out of range: expected {}", *number, spec.info.unit,
                                    spec.info.range));
+  }
+  if (spec.whole && *number != std::floor(*number)) {
+    throw Error(place, fmt::format("expected a whole number, got {}", *number));
   }
   spec.set_number(scenario, *number * spec.scale);
 }
