@@ -1,14 +1,24 @@
 // Simulated seconds per wall second for a 10 s run at 1 kHz output on one core: the simple
 // rig (one rigid mass, Stribeck seal) sliding and in stick-slip, LuGre on both steppers, and
-// the default two-mass virtual rig.
+// the default two-mass virtual rig, plain and as a sweep runs it (textured bore). Each prints
+// its right-hand-side evaluations and steps per run; StepControl compares the step-size
+// controllers in one process (docs/performance.md, "Simulation (second round)").
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
 #include <benchmark/benchmark.h>
 
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
 namespace {
 
 using namespace pneumachaos;
+
+// The work of one run: right-hand-side evaluations and steps (each the same in every run).
+void count_work(benchmark::State& state, const IntegrationSummary& s) {
+  state.counters["rhs_per_run"] = static_cast<double>(s.rhs_evaluations);
+  state.counters["steps_per_run"] = static_cast<double>(s.steps_accepted);
+  state.counters["rejected_per_run"] = static_cast<double>(s.steps_rejected);
+}
 
 void run(benchmark::State& state, Scenario s) {
   s.run.duration_s = 10.0;
@@ -17,14 +27,17 @@ void run(benchmark::State& state, Scenario s) {
   const auto options = s.run;
   double simulated = 0.0;
   std::size_t events = 0;
+  IntegrationSummary last;
   for (auto _ : state) {
     const auto r = simulate(plant, options);
     benchmark::DoNotOptimize(r.series.size());
     simulated += r.summary.t_final_s;
     events = r.summary.event_log.size();
+    last = r.summary;
   }
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
   state.counters["events_per_run"] = static_cast<double>(events);
+  count_work(state, last);
 }
 
 void BM_Sliding(benchmark::State& state) { run(state, simple_rig_scenario()); }
@@ -55,16 +68,89 @@ void BM_VirtualRigChaotic(benchmark::State& state) {
   s.run.duration_s = 10.0;
   const auto options = s.run;
   double simulated = 0.0;
+  IntegrationSummary last;
   for (auto _ : state) {
     const auto r = simulate(plant, options);
     benchmark::DoNotOptimize(r.series.size());
     simulated += r.summary.t_final_s;
+    last = r.summary;
   }
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+  count_work(state, last);
+}
+
+// A run of a sweep of the default map: the map's seal variation gives both contacts a
+// four-mode texture along the bore (docs/sweep.md), whose sines the friction laws evaluate.
+void BM_VirtualRigTextured(benchmark::State& state) {
+  Scenario base = default_scenario();
+  base.variation.friction_rel_sd = 0.03;
+  base.variation.texture_rel = 0.02;
+  Scenario s = vary(base, run_seed(1, 0, 0));
+  s.run.duration_s = 10.0;
+  const Plant plant(s);
+  const auto options = s.run;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    const auto r = simulate(plant, options);
+    benchmark::DoNotOptimize(r.series.size());
+    last = r.summary;
+  }
+  count_work(state, last);
+}
+
+// The default rig at the map's largest S2 (4.4 mm^2), sliding at ~0.8 m/s: the step is bound
+// by the stability of the guide's bristles (rate sigma0 |v| / g ~ 1.2e4 1/s), not by the
+// tolerance, and such points cost the most RHS evaluations of a sweep (docs/performance.md).
+void BM_VirtualRigFastSliding(benchmark::State& state) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = 4.4e-6;
+  s.run.duration_s = 10.0;
+  const Plant plant(s);
+  const auto options = s.run;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    const auto r = simulate(plant, options);
+    benchmark::DoNotOptimize(r.series.size());
+    last = r.summary;
+  }
+  count_work(state, last);
+}
+
+// The default rig integrated without output, with the default step-size controller
+// (Boost.Odeint's, first argument 0) and Hairer's PI controller (1, tried and not adopted:
+// docs/performance.md), in one process; second argument S2 in 0.01 mm^2 (the chaotic
+// default and the stiff fast-sliding point).
+void BM_VirtualRigStepControl(benchmark::State& state) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = static_cast<double>(state.range(1)) * 1e-8;
+  s.run.duration_s = 10.0;
+  const Plant plant(s);
+  IntegratorOptions io = integrator_options(s.run);
+  io.sample_rate_Hz = 0.0;
+  io.record_events = false;
+  const bool previous = state.range(0) == 0;  // the default
+  io.step_control = previous ? StepControl::kOdeint : StepControl::kPI;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    std::vector<double> x = plant.initial_state();
+    Mode mode = plant.initial_mode(x, 0.0);
+    last = integrate_hybrid(plant, x, mode, io, {});
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.SetLabel(previous ? "odeint controller (default)" : "PI controller (option)");
+  count_work(state, last);
 }
 
 BENCHMARK(BM_Sliding)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigChaotic)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigTextured)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigFastSliding)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigStepControl)
+    ->Args({0, 35})
+    ->Args({1, 35})
+    ->Args({0, 440})
+    ->Args({1, 440})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StickSlip)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlidingLuGre)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlidingLuGreRosenbrock)->Unit(benchmark::kMillisecond);

@@ -37,6 +37,19 @@ void BM_SweepThreads(benchmark::State& state) {
   sweep_into(spec, static_cast<std::size_t>(state.range(0)), state);
 }
 
+// The same 60 runs with the map's seal variation (friction levels and a four-mode texture
+// along the bore, docs/sweep.md), as the paper maps are swept; one thread.
+void BM_SweepTextured(benchmark::State& state) {
+  SweepSpec spec;
+  spec.base = default_scenario();
+  spec.base.variation.friction_rel_sd = 0.03;
+  spec.base.variation.texture_rel = 0.02;
+  spec.axes = {parse_grid_axis("circuit.S1_mm2=2.7:2.7:1"),
+               parse_grid_axis("circuit.S2_mm2=0.05:4.40:0.15")};
+  spec.repeats = 2;
+  sweep_into(spec, 1, state);
+}
+
 void BM_FullPaperMap(benchmark::State& state) {
   SweepSpec spec;
   spec.base = default_scenario();
@@ -46,6 +59,7 @@ void BM_FullPaperMap(benchmark::State& state) {
 }
 
 BENCHMARK(BM_SweepThreads)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SweepTextured)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_FullPaperMap)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace

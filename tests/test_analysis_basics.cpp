@@ -139,6 +139,37 @@ TEST(Embedding, EveryQueryMatchesAnExhaustiveSearch) {
   }
 }
 
+TEST(Embedding, BatchedQueriesAnswerAsSingleOnes) {
+  // Searched in the tree's order, answered in the caller's: the same neighbour for every
+  // query, on a record with repeats (grouped vectors) and one without, including queries
+  // past the indexed points and repeated queries.
+  std::vector<double> quantised(1200);
+  for (std::size_t i = 0; i < quantised.size(); ++i) {
+    quantised[i] = std::round(8.0 * std::sin(0.07 * i) + 3.0 * std::sin(0.19 * i));
+  }
+  std::vector<double> chaotic = lorenz_x(1200);
+  for (const auto* x : {&chaotic, &quantised}) {
+    const DelayEmbedding e(*x, 3, 4);
+    const NeighbourIndex index(e, 1000, repeat_resolution(*x));
+    std::vector<std::size_t> queries;
+    for (std::size_t i = e.size(); i-- > 0;) queries.push_back((i * 37) % e.size());
+    queries.push_back(5);
+    queries.push_back(5);
+    const auto nearest = index.nearest_each(queries, 10);
+    const auto knn = index.k_nearest_each(queries, 3, 10);
+    ASSERT_EQ(nearest.size(), queries.size());
+    ASSERT_EQ(knn.size(), queries.size());
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const Neighbour one = index.nearest(queries[q], 10);
+      EXPECT_EQ(nearest[q].index, one.index) << "query " << queries[q];
+      EXPECT_EQ(nearest[q].distance2, one.distance2);
+      const auto three = index.k_nearest(queries[q], 3, 10);
+      ASSERT_EQ(knn[q].size(), three.size());
+      for (std::size_t k = 0; k < three.size(); ++k) EXPECT_EQ(knn[q][k].index, three[k].index);
+    }
+  }
+}
+
 TEST(Embedding, ExactRepeatsAreSkipped) {
   // A quantised record: many exact repeats, which carry no direction.
   std::vector<double> x(2000);

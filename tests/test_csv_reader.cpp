@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 
 namespace pneumachaos {
@@ -77,6 +78,34 @@ TEST(CsvReader, BadInputNamesTheLineAndColumn) {
   EXPECT_NE(error_of("v\n1\n2\n").find("give the sample rate"), std::string::npos);
   EXPECT_NE(error_of("t,v\n0,1\n").find("at least 2"), std::string::npos);
   EXPECT_NE(error_of("").find("empty"), std::string::npos);
+}
+
+
+// The reader cuts lines and fields itself (docs/performance.md "Analysis (second round)"):
+// the cases a string stream used to decide. Expected values written out by hand.
+TEST(CsvReader, LinesAndFieldsAsAStreamWouldCutThem) {
+  CsvSeriesOptions o;
+  o.rate_Hz = 10.0;
+  // Quoted cells and blanks around them, comment and blank lines (one quoted), a last line
+  // without a newline.
+  const auto s =
+      parse_csv_series("t , \"v\"\n#c\n  \n\"# quoted comment\"\n0, \"1.5\" \n\t\n0.1,-2", "r.csv", o);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.channels().front().values[0], 1.5);
+  EXPECT_EQ(s.channels().front().values[1], -2.0);
+  // A trailing comma is one more (empty) field; an empty quoted cell is no number.
+  EXPECT_EQ(error_of("t,v\n0,1,\n"), "rec.csv:2: expected 2 fields as in the header, got 3");
+  EXPECT_EQ(error_of("t,v\n0,\"\"\n0.1,2\n"),
+            "rec.csv:2: column 2 (v): expected a number, got \"\"");
+  EXPECT_EQ(error_of("t,v\n0,  \n"), "rec.csv:2: column 2 (v): expected a number, got \"\"");
+  EXPECT_EQ(split_csv_fields(""), std::vector<std::string>{});
+  EXPECT_EQ(split_csv_fields(","), (std::vector<std::string>{"", ""}));
+  EXPECT_EQ(split_csv_fields("a,,b "), (std::vector<std::string>{"a", "", "b "}));
+  // Blank-separated: runs of blanks and tabs, quotes stripped from a cell.
+  o.column = "2";
+  const auto b = parse_csv_series(" 1 \t \"2.5\"\n3 4\n", "r.dat", o);
+  EXPECT_EQ(b.channels().front().values[0], 2.5);
+  EXPECT_EQ(b.channels().front().values[1], 4.0);
 }
 
 }  // namespace

@@ -67,6 +67,30 @@ TEST(EventIntegrator, GlobalErrorFollowsTheTolerance) {
   EXPECT_LT(slope, 1.1);
 }
 
+TEST(EventIntegrator, PIStepControlKeepsTheToleranceWithFewerRejections) {
+  // The same harmonic oscillator under Hairer's PI controller: the global error stays near
+  // the tolerance, and fewer steps are rejected than under odeint's default controller.
+  constexpr double kOmega = 2.0 * std::numbers::pi;
+  for (double tol : {1e-6, 1e-9}) {
+    IntegratorOptions o;
+    o.t_end_s = 5.0;
+    o.relative_tolerance = o.absolute_tolerance = tol;
+    o.max_step_s = 1.0;
+    o.sample_rate_Hz = 100.0;
+    o.step_control = StepControl::kPI;
+    EXPECT_LT(max_error_harmonic(o, kOmega), 100.0 * tol) << "tol " << tol;
+    std::size_t rejected[2];
+    for (StepControl c : {StepControl::kOdeint, StepControl::kPI}) {
+      o.step_control = c;
+      HarmonicOscillator osc(kOmega);
+      std::vector<double> x{1.0, 0.0};
+      Mode mode;
+      rejected[c == StepControl::kPI] = integrate_hybrid(osc, x, mode, o).steps_rejected;
+    }
+    EXPECT_LT(rejected[1], rejected[0]) << "tol " << tol;
+  }
+}
+
 class SteppersTest : public ::testing::TestWithParam<StepperKind> {};
 
 TEST_P(SteppersTest, RampedBlockSticksAndSlipsOnTheAnalyticSchedule) {

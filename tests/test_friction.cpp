@@ -48,6 +48,33 @@ TEST(Friction, PressureDependenceRaisesBothLevels) {
   EXPECT_NEAR(f->force_N({0.0, 0.5e6, 0.0}, +1, {}, {}), 25.0, 1e-12);
 }
 
+TEST(Friction, TextureScalesBothLevelsByOneFactor) {
+  // Fc and Fs share the texture factor 1 + sum a sin(k x + phi) (docs/model.md), summed once
+  // for both (docs/performance.md): the steady force must equal the law written out here
+  // operation for operation, to the last bit.
+  FrictionParams p = params(FrictionKind::kStribeck);
+  p.stribeck_exponent = 1.0;
+  p.coulomb_gain_N_per_Pa = 10e-6;
+  p.static_gain_N_per_Pa = 20e-6;
+  p.texture = {{0.02, 300.0, 0.4}, {-0.01, 150.0, 2.0}, {0.015, 610.0, 5.1}, {0.005, 90.0, 1.0}};
+  const double gauge = 0.3e6;
+  for (FrictionKind kind : {FrictionKind::kStribeck, FrictionKind::kLuGre}) {
+    p.kind = kind;
+    const auto f = make_friction_model(p);
+    for (double x : {0.0, 0.0123, 0.41}) {
+      double texture = 1.0;
+      for (const TextureMode& m : p.texture)
+        texture += m.amplitude * std::sin(m.wavenumber_per_m * x + m.phase);
+      const double fc = (20.0 + 10e-6 * gauge) * texture;
+      const double fs = (40.0 + 20e-6 * gauge) * texture;
+      const double v = 0.004;
+      const double expected = fc + (fs - fc) * std::exp(-(std::abs(v) / 0.01)) + 30.0 * v;
+      EXPECT_EQ(f->steady_force_N({v, gauge, x}), expected) << "x = " << x;
+      EXPECT_NE(texture, 1.0);
+    }
+  }
+}
+
 TEST(Friction, LuGreAtConstantVelocitySettlesOnItsStribeckCurve) {
   // At constant v, dz/dt = v - sigma0 |v| z / g(v) is linear in z and relaxes to
   // z = g(v)/sigma0 with time constant g/(sigma0 |v|); the force then equals g(v) + sigma2 v.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -102,11 +103,17 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                            : "");
     out += fmt::format("maximum Lyapunov exponent (1/s = nats/s):\n");
     if (r.divergence.found_linear_region) {
+      const auto& seg = r.divergence.segment_slopes_per_step;
+      const double segment_min = seg.empty() ? 0.0 : *std::min_element(seg.begin(), seg.end());
+      const double segment_max = seg.empty() ? 0.0 : *std::max_element(seg.begin(), seg.end());
       out += fmt::format(
-          "  divergence curve: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), fit {:.4g}..{:.4g} s\n",
+          "  divergence curve: {:.4g} +- {:.2g} 1/s ({:.4g} bits/s), fit {:.4g}..{:.4g} s (slope "
+          "alone +- {:.2g}); on {} segments {:.3g} .. {:.3g} 1/s\n",
           r.divergence.lambda_per_s, r.divergence.uncertainty_per_s,
           bits(r.divergence.lambda_per_s), r.divergence.fit_first / r.rate_Hz,
-          r.divergence.fit_last / r.rate_Hz);
+          r.divergence.fit_last / r.rate_Hz, r.divergence.slope_uncertainty_per_s,
+          r.divergence.segment_slopes_per_step.size(), segment_min * r.rate_Hz,
+          segment_max * r.rate_Hz);
     } else {
       out += "  divergence curve: no rising linear region\n";
     }
@@ -159,6 +166,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["lyapunov"]["divergence"] = {
       {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
       {"uncertainty", number(r.divergence.uncertainty_per_s)},
+      {"slope_uncertainty", number(r.divergence.slope_uncertainty_per_s)},
       {"unit", "1/s"},
       {"value_bits",
        r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},
@@ -168,8 +176,18 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
        {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
         {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
       {"aligned_in_time", r.divergence.aligned},
-      {"method", "Rosenstein/Kantz divergence, automatic linear region, jackknife"}};
+      {"method",
+       "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
+       "fit window, segments"}};
   j["lyapunov"]["divergence"]["status"] = r.divergence_status;
+  // The exponent fitted on each contiguous segment of the record (docs/analysis.md
+  // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
+  std::vector<double> segments;
+  for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);
+  j["lyapunov"]["divergence"]["segments"] = {
+      {"values", segments},
+      {"unit", "1/s"},
+      {"without_own_linear_region", r.divergence.segments_without_region}};
   if (!r.wolf_status.empty()) {
     j["lyapunov"]["wolf"] = {{"value", r.wolf_run ? number(r.wolf.lambda_per_s) : nullptr},
                              {"status", r.wolf_status},

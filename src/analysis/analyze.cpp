@@ -198,6 +198,7 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   e.lyapunov_found = r.divergence.found_linear_region;
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
+  e.lyapunov_slope_uncertainty_per_s = r.divergence.slope_uncertainty_per_s;
 }
 
 }  // namespace

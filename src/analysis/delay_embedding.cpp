@@ -41,24 +41,29 @@ double DelayEmbedding::distance2(std::size_t i, std::size_t j) const {
 
 namespace {
 
-// The shortest prefix of x that holds a repeated value (x.size() + 1 if none). One analysis
-// builds about ten indices on the same series, so the last answer is remembered, keyed by the
-// series' address, length and a hash of its contents.
-std::size_t first_repeat_length(std::span<const double> x) {
-  struct Memo {
-    const double* data = nullptr;
-    std::size_t size = 0;
-    std::uint64_t hash = 0;
-    std::size_t length = 0;
-  };
-  thread_local Memo memo;
+// What the indices of one analysis need to know about its values: the shortest prefix of x
+// that holds a repeated value (x.size() + 1 if none) and, when there are repeats, every
+// value's rank among the distinct values (equal values, -0 and +0 included, share one). One
+// analysis builds about ten indices on the same series, so this is worked out once, keyed by
+// the series' address, length and a hash of its contents.
+struct ValueOrder {
+  const double* data = nullptr;
+  std::size_t size = 0;
+  std::uint64_t hash = 0;
+  std::size_t repeat_length = 0;
+  std::vector<std::uint32_t> rank;  ///< empty without repeats (nothing needs it then)
+  std::size_t distinct = 0;
+};
+
+const ValueOrder& value_order(std::span<const double> x) {
+  thread_local ValueOrder memo;
   std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a over the values' bit patterns
   for (double v : x) {
     std::uint64_t bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
     hash = (hash ^ bits) * 1099511628211ULL;
   }
-  if (memo.data == x.data() && memo.size == x.size() && memo.hash == hash) return memo.length;
+  if (memo.data == x.data() && memo.size == x.size() && memo.hash == hash) return memo;
   std::vector<std::pair<double, std::size_t>> v(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) v[i] = {x[i], i};
   std::sort(v.begin(), v.end());
@@ -69,8 +74,37 @@ std::size_t first_repeat_length(std::span<const double> x) {
       length = std::min(length, v[i].second + 1);
     }
   }
-  memo = {x.data(), x.size(), hash, length};
-  return length;
+  memo = {x.data(), x.size(), hash, length, {}, 0};
+  if (length <= x.size()) {
+    memo.rank.resize(x.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (i > 0 && v[i].first != v[i - 1].first) ++memo.distinct;
+      memo.rank[v[i].second] = static_cast<std::uint32_t>(memo.distinct);
+    }
+    ++memo.distinct;
+  }
+  return memo;
+}
+
+// Vectors 0 .. points-1 in lexicographic order of their coordinates, equal vectors by time,
+// for a series with repeats. A stable counting sort by each coordinate's value rank, last
+// coordinate first: the same order as comparing whole vectors (and then indices), in
+// dimension x (N + distinct values) steps. The comparison sort it replaces was 2.5 % of a
+// sweep, whose records rest (docs/performance.md "Analysis (second round)").
+std::vector<std::size_t> lexicographic_order(const DelayEmbedding& e, std::size_t points) {
+  const ValueOrder& values = value_order(e.series());
+  std::vector<std::size_t> order(points), next(points);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> start(values.distinct + 1);
+  for (std::size_t d = e.dimension(); d-- > 0;) {
+    const std::uint32_t* rank = values.rank.data() + d * e.delay();
+    std::fill(start.begin(), start.end(), std::size_t{0});
+    for (std::size_t i = 0; i < points; ++i) ++start[rank[i] + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (const std::size_t i : order) next[start[rank[i]]++] = i;
+    order.swap(next);
+  }
+  return order;
 }
 
 // Distinct delay vectors and the times at which each occurs. Records that rest (a stuck
@@ -82,7 +116,7 @@ struct Groups {
   std::vector<std::size_t> member;          ///< ascending indices within each group
 
   Groups(const DelayEmbedding& e, std::size_t points) {
-    if (points < first_repeat_length(e.series())) {
+    if (points < value_order(e.series()).repeat_length) {
       // Equal vectors need equal first coordinates: with no repeated value among them, every
       // group is one vector, in time order. This skips the lexicographic sort of the vectors,
       // most of the cost of an index on a record without repeats; the neighbours are the same.
@@ -92,16 +126,7 @@ struct Groups {
       count = points;
       return;
     }
-    std::vector<std::size_t> order(points);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    const auto less = [&](std::size_t a, std::size_t b) {
-      for (std::size_t d = 0; d < e.dimension(); ++d) {
-        const double ca = e.coordinate(a, d), cb = e.coordinate(b, d);
-        if (ca != cb) return ca < cb;
-      }
-      return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
+    const std::vector<std::size_t> order = lexicographic_order(e, points);
     for (std::size_t n = 0; n < order.size(); ++n) {
       if (n == 0 || e.distance2(order[n - 1], order[n]) != 0.0) {
         start.push_back(member.size());
@@ -115,6 +140,19 @@ struct Groups {
 
   bool identity = false;  ///< every vector distinct: tree point k is vector k, no tables
   std::size_t count = 0;  ///< tree points
+
+  // group[i]: the tree point of vector i, for i < the indexed points.
+  [[nodiscard]] std::vector<std::size_t> group_of_vectors() const {
+    std::vector<std::size_t> group(identity ? count : member.size());
+    if (identity) {
+      std::iota(group.begin(), group.end(), std::size_t{0});
+      return group;
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      for (std::size_t m = start[k]; m < start[k + 1]; ++m) group[member[m]] = k;
+    }
+    return group;
+  }
 
   [[nodiscard]] std::size_t first_of(std::size_t k) const {
     return identity ? k : representative[k];
@@ -264,6 +302,38 @@ Neighbour NeighbourIndex::nearest(std::size_t i, std::size_t theiler) const {
   ExcludingNearest result(impl_->groups, i, theiler, impl_->min_d2);
   impl_->tree.search(impl_->point(i), result);
   return result.found() ? result.best() : Neighbour{size(), 0.0};
+}
+
+// Queries keyed by where their own vector sits in the tree (after every indexed vector if it
+// is not indexed): successive searches then walk the same cells while they are in cache. On
+// 1e5 samples of white noise in dimension 7 that made the divergence curve's searches ~1.4x
+// faster (docs/performance.md "Analysis (second round)").
+std::vector<std::size_t> NeighbourIndex::search_order(std::span<const std::size_t> queries) const {
+  const std::vector<std::size_t> group = impl_->groups.group_of_vectors();
+  const std::vector<std::size_t> rank = impl_->tree.storage_rank();
+  std::vector<std::pair<std::size_t, std::size_t>> keyed(queries.size());
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const std::size_t i = queries[q];
+    keyed[q] = {i < group.size() ? rank[group[i]] : rank.size(), q};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> order(queries.size());
+  for (std::size_t n = 0; n < keyed.size(); ++n) order[n] = keyed[n].second;
+  return order;
+}
+
+std::vector<Neighbour> NeighbourIndex::nearest_each(std::span<const std::size_t> queries,
+                                                    std::size_t theiler) const {
+  std::vector<Neighbour> found(queries.size());
+  for (const std::size_t q : search_order(queries)) found[q] = nearest(queries[q], theiler);
+  return found;
+}
+
+std::vector<std::vector<Neighbour>> NeighbourIndex::k_nearest_each(
+    std::span<const std::size_t> queries, std::size_t k, std::size_t theiler) const {
+  std::vector<std::vector<Neighbour>> found(queries.size());
+  for (const std::size_t q : search_order(queries)) found[q] = k_nearest(queries[q], k, theiler);
+  return found;
 }
 
 std::vector<Neighbour> NeighbourIndex::within(std::size_t i, double r, std::size_t theiler) const {

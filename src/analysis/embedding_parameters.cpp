@@ -133,10 +133,14 @@ DimensionChoice choose_dimension(std::span<const double> x, std::size_t delay, s
     const DelayEmbedding low(x, d, delay);
     const NeighbourIndex index(low, emb.size(), resolution);
     const std::size_t stride = std::max<std::size_t>(1, emb.size() / 1500);
+    std::vector<std::size_t> references;
+    for (std::size_t i = 0; i < emb.size(); i += stride) references.push_back(i);
+    const std::vector<Neighbour> neighbours = index.nearest_each(references, theiler);
     double sum = 0.0, sum_star = 0.0;
     std::size_t count = 0;
-    for (std::size_t i = 0; i < emb.size(); i += stride) {
-      const Neighbour nb = index.nearest(i, theiler);
+    for (std::size_t r = 0; r < references.size(); ++r) {
+      const std::size_t i = references[r];
+      const Neighbour& nb = neighbours[r];
       if (nb.index >= emb.size()) continue;
       sum += std::sqrt(emb.distance2(i, nb.index) / nb.distance2);
       sum_star += std::abs(x[i + d * delay] - x[nb.index + d * delay]);

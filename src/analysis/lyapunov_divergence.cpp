@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "divergence_uncertainty.hpp"
 #include "pneumachaos/analysis/continuous_alignment.hpp"
 #include "pneumachaos/analysis/linear_region.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
@@ -18,6 +19,9 @@ void DivergenceOptions::validate(std::size_t n) const {
   if (n < 100) throw Error("lyapunov", fmt::format("{} samples: at least 100 are needed", n));
   if (!(slope_tolerance > 0.0)) throw Error("lyapunov.slope_tolerance", "must be positive");
   if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
+  if (segments < 2 || segments > jackknife_blocks) {
+    throw Error("lyapunov.segments", "must be between 2 and jackknife_blocks");
+  }
 }
 
 namespace {
@@ -77,9 +81,15 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   const std::size_t blocks = o.jackknife_blocks;
   BlockSums bs{std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0)),
                std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
+  std::vector<std::size_t> references;
+  for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
+  // All neighbours first (searched in the tree's order: docs/performance.md), then the sums
+  // in the references' order, so every sum adds the same terms in the same order as before.
+  const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1);
-  for (std::size_t i = p.margin; i < p.usable; i += stride) {
-    const Neighbour nb = index.nearest(i, o.theiler);
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    const std::size_t i = references[r];
+    const Neighbour& nb = neighbours[r];
     if (nb.index >= p.usable || nb.index < p.margin) continue;
     const std::size_t b = std::min(blocks - 1, (i * blocks) / p.usable);
     // The neighbour's series, shifted by its (constant) offset: interpolated once per sample
@@ -112,10 +122,9 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   return bs;
 }
 
-// Jackknife over blocks of references on the chosen window, plus the change when the window
-// is narrowed by one spacing at either end (the choice of window is part of the estimate);
-// per step.
-double slope_uncertainty(const BlockSums& bs, const DivergenceResult& r, std::size_t spacing) {
+// The slope's uncertainty on the chosen window, per step: the jackknife over blocks of
+// references, and the change when the window is narrowed by one spacing at either end.
+double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const DivergenceResult& r) {
   const std::size_t blocks = bs.sum.size();
   std::vector<double> slopes;
   for (std::size_t b = 0; b < blocks; ++b) {
@@ -132,6 +141,20 @@ double slope_uncertainty(const BlockSums& bs, const DivergenceResult& r, std::si
     window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));
   }
   return std::hypot(jack, window);
+}
+
+// The value's uncertainty adds, in quadrature, the spread of the exponent fitted separately
+// on contiguous segments of the record, each with its own window (docs/analysis.md
+// "Divergence exponent's uncertainty"). Fills both uncertainties and the segments.
+void uncertainties(const BlockSums& bs, std::size_t spacing, const DivergenceOptions& o,
+                   double rate_Hz, DivergenceResult& r) {
+  const double slope = slope_uncertainty(bs, spacing, r);
+  const detail::SegmentSlopes seg = detail::segment_slopes(
+      bs.sum, bs.count, o.segments, spacing, o.slope_tolerance, r.fit_first, r.fit_last);
+  r.segment_slopes_per_step = seg.slopes;
+  r.segments_without_region = seg.without_region;
+  r.slope_uncertainty_per_s = slope * rate_Hz;
+  r.uncertainty_per_s = std::hypot(slope, seg.standard_error) * rate_Hz;
 }
 
 }  // namespace
@@ -155,7 +178,7 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   r.slope_per_step = region.slope;
   r.intercept = region.intercept;
   r.lambda_per_s = region.slope * rate_Hz;
-  r.uncertainty_per_s = slope_uncertainty(sums, r, spacing) * rate_Hz;
+  uncertainties(sums, spacing, o, rate_Hz, r);
   return r;
 }
 

@@ -56,10 +56,14 @@ double nonlinear_prediction_error(std::span<const double> x, const PredictionOpt
   const DelayEmbedding e(x, o.dimension, o.delay);
   const NeighbourIndex index(e, usable, repeat_resolution(x));
   const std::size_t stride = std::max<std::size_t>(1, usable / o.max_references);
+  std::vector<std::size_t> references;
+  for (std::size_t i = 0; i < usable; i += stride) references.push_back(i);
+  const auto neighbours = index.k_nearest_each(references, o.neighbours, o.theiler);
   double sse = 0.0;
   std::size_t count = 0;
-  for (std::size_t i = 0; i < usable; i += stride) {
-    const auto nbs = index.k_nearest(i, o.neighbours, o.theiler);
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    const std::size_t i = references[r];
+    const std::vector<Neighbour>& nbs = neighbours[r];
     if (nbs.empty()) continue;
     double p = 0.0;
     for (const Neighbour& nb : nbs) p += x[nb.index + last + h];

@@ -33,10 +33,12 @@ class Notes {
 void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
   c.positive = note(
       e.lyapunov_found && e.lyapunov_per_s > 0.0 &&
-          e.lyapunov_per_s > o.lyapunov_sigmas * e.lyapunov_uncertainty_per_s,
+          e.lyapunov_per_s > o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s,
       e.lyapunov_found
-          ? fmt::format("exponential divergence: exponent {:.4g} +- {:.2g} 1/s above {} sigma",
-                        e.lyapunov_per_s, e.lyapunov_uncertainty_per_s, o.lyapunov_sigmas)
+          ? fmt::format("exponential divergence: the curve's slope {:.4g} +- {:.2g} 1/s above {} "
+                        "sigma (the exponent's value: +- {:.2g} with the spread over segments)",
+                        e.lyapunov_per_s, e.lyapunov_slope_uncertainty_per_s, o.lyapunov_sigmas,
+                        e.lyapunov_uncertainty_per_s)
           : std::string("exponential divergence: the divergence curve has no rising linear "
                         "region"));
 }

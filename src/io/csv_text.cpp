@@ -58,12 +58,27 @@ constexpr std::string_view kBom = "\xEF\xBB\xBF";
 }
 
 CsvLines::CsvLines(const std::string& text)
-    : in_(text.starts_with(kBom) ? text.substr(kBom.size()) : text) {}
+    : text_(text.starts_with(kBom) ? text.substr(kBom.size()) : text) {}
 
+// Lines as std::getline would cut them (a last line without '\n' counts, a final '\n' opens
+// none), found by memchr rather than through a string stream, and judged blank or comment
+// without copying: this runs once per sample of an analysed record.
 bool CsvLines::next(std::string& line) {
-  while (std::getline(in_, line)) {
+  while (pos_ < text_.size()) {
+    const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+    line.assign(text_, pos_, end - pos_);
+    pos_ = end + 1;
     ++number_;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto first = std::find_if(line.begin(), line.end(), [](unsigned char c) {
+      return !std::isspace(c);
+    });
+    if (first == line.end()) continue;
+    if (*first != '"') {
+      if (*first != '#') return true;
+      continue;
+    }
+    // A quoted start: trim_field also strips the quotes, so let it decide.
     const std::string t = trim_field(line);
     if (!t.empty() && t.front() != '#') return true;
   }

@@ -7,6 +7,7 @@ std::size_t GmsFriction::state_count() const {
   return static_cast<std::size_t>(p_.gms_elements);
 }
 
+// As LuGre's: the interface's smooth models read sgn v from v itself (no branch).
 double GmsFriction::force_N(const FrictionInput& in, int /*direction*/, std::span<const double> z,
                             std::span<double> dz) const {
   return friction_law::gms_N(p_, in, z.data(), dz.data());

@@ -40,25 +40,28 @@ T gms_slip_weight(T q) {
 /// its share (the contact's motion, less the slip); above it (the level fell) it is attracted
 /// back by (v r - |v| z) / L over the attraction length L. Both vanish at z = r sgn v and at
 /// v = 0, and the element never deflects faster than the contact while loading, so it only
-/// dissipates (docs/model.md).
+/// dissipates (docs/model.md). `sgn` and `speed` stand for sgn v and |v| (or their branch's
+/// continuation, as in lugre_N).
 template <typename T, typename P>
-T gms_element_rate(const P& p, const T& v, const T& z, const T& r) {
-  using std::abs;
-  const double sgn = v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+T gms_element_rate(const P& p, const T& v, const T& speed, double sgn, const T& z, const T& r) {
   const T q = sgn * z / r;
-  if (q > 1.0) return (v * r - abs(v) * z) / p.gms_attraction_length_m;
+  if (q > 1.0) return (v * r - speed * z) / p.gms_attraction_length_m;
   return (1.0 - gms_slip_weight(q)) * v;
 }
 
 /// Writes each element's dz_i/dt to dz[i]; returns F = sum k z_i + B v, with the slip
-/// deflections at the present Stribeck level g(v).
+/// deflections at the present Stribeck level g(v). `branch` as in lugre_N: +1/-1 the contact
+/// moves with v >= 0 / v <= 0 and |v| is continued as branch * v past 0; 0: |v| itself.
 template <typename T, typename P>
-T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz) {
+T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz, int branch = 0) {
+  using std::abs;
   const T& v = in.v_m_per_s;
-  const T g = stribeck_level_N(p, in, v);
+  const double sgn = branch != 0 ? branch : (v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0));
+  const T speed = branch == 0 ? T(abs(v)) : T(sgn * v);
+  const T g = stribeck_level_N(p, in, speed, branch != 0);
   T elastic(0.0);
   for (int i = 0; i < p.gms_elements; ++i) {
-    dz[i] = gms_element_rate(p, v, z[i], gms_reach_m(p, i, g));
+    dz[i] = gms_element_rate(p, v, speed, sgn, z[i], gms_reach_m(p, i, g));
     elastic += z[i];
   }
   return gms_element_stiffness(p) * elastic + p.viscous_Ns_per_m * v;

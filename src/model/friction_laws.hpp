@@ -27,28 +27,52 @@ T texture_factor(const P& p, const T& position_m) {
   return f;
 }
 
+/// A friction level with its pressure dependence, times the texture factor `texture`.
+template <typename T, typename Q>
+T textured_level_N(const Q& level_N, const Q& gain_N_per_Pa, const T& gauge_sum_Pa,
+                   const T& texture) {
+  return (level_N + gain_N_per_Pa * gauge_sum_Pa) * texture;
+}
+
 /// Fc with its pressure dependence and texture (docs/model.md).
 template <typename T, typename P>
 T coulomb_N(const P& p, const BasicFrictionInput<T>& in) {
-  return (p.coulomb_N + p.coulomb_gain_N_per_Pa * in.gauge_sum_Pa) *
-         texture_factor(p, in.position_m);
+  return textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa,
+                          texture_factor(p, in.position_m));
 }
 
 /// Fs, likewise.
 template <typename T, typename P>
 T static_N(const P& p, const BasicFrictionInput<T>& in) {
-  return (p.static_N + p.static_gain_N_per_Pa * in.gauge_sum_Pa) * texture_factor(p, in.position_m);
+  return textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa,
+                          texture_factor(p, in.position_m));
 }
 
-/// exp(-(|speed|/vs)^delta), the Stribeck drop's weight.
+/// Fc and Fs together: the texture's sines, the bulk of a friction evaluation on a textured
+/// bore (docs/performance.md), are summed once for both.
+template <typename T>
+struct Levels {
+  T coulomb_N;
+  T static_N;
+};
 template <typename T, typename P>
-T stribeck_weight(const P& p, const T& speed) {
+Levels<T> levels_N(const P& p, const BasicFrictionInput<T>& in) {
+  const T texture = texture_factor(p, in.position_m);
+  return {textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa, texture),
+          textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa, texture)};
+}
+
+/// exp(-(|speed|/vs)^delta), the Stribeck drop's weight. `continued`: speed is a branch's
+/// signed continuation of |v| (lugre_N), taken as it is where the law has a smooth
+/// continuation past 0 (delta = 1: exp(-speed/vs)); equal to |speed| wherever speed >= 0.
+template <typename T, typename P>
+T stribeck_weight(const P& p, const T& speed, bool continued = false) {
   using std::abs;
   using std::exp;
   using std::pow;
   using std::sqrt;
-  const T u = abs(speed) / p.stribeck_velocity_m_per_s;
   const auto& delta = p.stribeck_exponent;  // double, or a fitted Jet
+  const T u = (continued && delta == 1.0 ? speed : T(abs(speed))) / p.stribeck_velocity_m_per_s;
   // The common exponents avoid pow(), which dominated the derivative's cost.
   T w;
   if (delta == 2.0) {
@@ -65,9 +89,10 @@ T stribeck_weight(const P& p, const T& speed) {
 
 /// Stribeck curve magnitude g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta).
 template <typename T, typename P>
-T stribeck_level_N(const P& p, const BasicFrictionInput<T>& in, const T& speed) {
-  const T fc = coulomb_N(p, in);
-  return fc + (static_N(p, in) - fc) * stribeck_weight(p, speed);
+T stribeck_level_N(const P& p, const BasicFrictionInput<T>& in, const T& speed,
+                   bool continued = false) {
+  const Levels<T> f = levels_N(p, in);
+  return f.coulomb_N + (f.static_N - f.coulomb_N) * stribeck_weight(p, speed, continued);
 }
 
 /// Sliding force of the stiction models in `direction` (+1/-1): `classic`, paper eq. (4),
@@ -84,13 +109,16 @@ T stiction_sliding_N(const P& p, const BasicFrictionInput<T>& in, int direction)
 }
 
 /// LuGre (Canudas de Wit et al. 1995): dz/dt = v - sigma0 |v| z / g(v),
-/// F = sigma0 z + sigma1 dz/dt + sigma2 v. Writes dz/dt to dz.
+/// F = sigma0 z + sigma1 dz/dt + sigma2 v. Writes dz/dt to dz. `branch` +1/-1: the contact
+/// moves with v >= 0 / v <= 0 and |v| is taken as branch * v, its smooth continuation past
+/// v = 0 (the Plant flips the branch at the crossing, docs/model.md); 0: |v| itself.
 template <typename T, typename P>
-T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz) {
+T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz, int branch = 0) {
   using std::abs;
   const T& v = in.v_m_per_s;
-  const T g = stribeck_level_N(p, in, v);
-  dz = v - p.sigma0_N_per_m * abs(v) * z / g;
+  const T speed = branch == 0 ? T(abs(v)) : T(static_cast<double>(branch) * v);
+  const T g = stribeck_level_N(p, in, speed, branch != 0);
+  dz = v - p.sigma0_N_per_m * speed * z / g;
   return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
 }
 
@@ -104,8 +132,8 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   T speed = d * in.v_m_per_s;
   if (speed < 0.0) speed = T(0.0);
   ds = (stribeck_weight(p, speed) - s) / p.lag_time_s;
-  const T fc = coulomb_N(p, in);
-  return d * (fc + (static_N(p, in) - fc) * s + p.viscous_Ns_per_m * speed);
+  const Levels<T> f = levels_N(p, in);
+  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.viscous_Ns_per_m * speed);
 }
 
 }  // namespace pneumachaos::friction_law
@@ -128,8 +156,8 @@ void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
 template <typename T, typename P>
 T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction,
                  const T* z, T* dz) {
-  if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0]);
-  if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz);
+  if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
+  if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz, direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);
   return stiction_sliding_N(p, in, direction);
 }

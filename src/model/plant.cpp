@@ -125,8 +125,7 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
   };
   for (std::size_t c = 0; c < contacts_; ++c) {
     const ContactMode m = mode_of(mode, c);
-    if (m == ContactMode::kSlidePos || m == ContactMode::kSlideNeg)
-      add(EventType::kVelocityZero, c);
+    if (direction_of(m) != 0) add(EventType::kVelocityZero, c);
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
@@ -172,9 +171,10 @@ ContactMode Plant::rest_mode(std::size_t contact, std::span<const double> x, boo
   const double hold = holding_force(contact, x);
   if (at_stop) {
     if (drive - hold <= 0.0) return ContactMode::kAtStop;
-    return f.has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmooth;
+    return f.has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmoothPos;
   }
-  if (!f.has_stiction()) return ContactMode::kSmooth;
+  // A smooth contact at v = 0 accelerates as drive - sigma0 z (dz/dt = 0 there).
+  if (!f.has_stiction()) return drive - hold >= 0.0 ? ContactMode::kSmoothPos : ContactMode::kSmoothNeg;
   if (std::abs(drive) <= hold) return ContactMode::kStuck;
   return drive > 0 ? ContactMode::kSlidePos : ContactMode::kSlideNeg;
 }
@@ -189,6 +189,14 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
   EventOutcome out;
   switch (ev.type) {
     case EventType::kVelocityZero: {
+      const ContactMode m = mode_of(mode, c);
+      if (m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) {
+        // Located where v is already past 0: the same motion continues on the other branch.
+        set_mode(mode, c, m == ContactMode::kSmoothPos ? ContactMode::kSmoothNeg
+                                                       : ContactMode::kSmoothPos);
+        out.kind = EventKind::kReversal;
+        break;
+      }
       x[iv] = 0.0;
       const ContactMode next = rest_mode(c, x, false);
       out.kind = next == ContactMode::kStuck ? EventKind::kStick : EventKind::kReversal;
@@ -201,7 +209,8 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       out.kind = EventKind::kSlip;
       break;
     case EventType::kStopRelease:
-      set_mode(mode, c, seal_->has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmooth);
+      set_mode(mode, c,
+               seal_->has_stiction() ? ContactMode::kSlidePos : ContactMode::kSmoothPos);
       out.kind = EventKind::kStopRelease;
       break;
     case EventType::kStopHit:
@@ -257,7 +266,7 @@ Mode Plant::initial_mode(std::span<const double> x, double /*t*/) const {
     if (vel != 0.0) {
       const FrictionModel& f = c == kSeal ? *seal_ : *guide_;
       set_mode(mode, c,
-               !f.has_stiction() ? ContactMode::kSmooth
+               !f.has_stiction() ? (vel > 0 ? ContactMode::kSmoothPos : ContactMode::kSmoothNeg)
                : vel > 0         ? ContactMode::kSlidePos
                                  : ContactMode::kSlideNeg);
       return;

@@ -21,7 +21,8 @@ inline ContactMode mode_of(const Mode& m, std::size_t contact) {
 }
 inline bool moving(ContactMode m) { return m != ContactMode::kStuck && m != ContactMode::kAtStop; }
 inline int direction_of(ContactMode m) {
-  return m == ContactMode::kSlidePos ? 1 : (m == ContactMode::kSlideNeg ? -1 : 0);
+  if (m == ContactMode::kSlidePos || m == ContactMode::kSmoothPos) return 1;
+  return m == ContactMode::kSlideNeg || m == ContactMode::kSmoothNeg ? -1 : 0;
 }
 
 }  // namespace plant_detail

@@ -133,7 +133,9 @@ void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vec
                         const std::vector<double>& F, std::size_t settle) {
   if (a.divergence.found_linear_region) {
     ci.example_lambda = a.divergence.lambda_per_s;
-    ci.example_uncertainty = a.divergence.uncertainty_per_s;
+    // The claim tests the rise (3 sigma), as the verdict does: the slope's uncertainty
+    // (docs/analysis.md "Divergence exponent's uncertainty").
+    ci.example_uncertainty = a.divergence.slope_uncertainty_per_s;
   }
   ci.example_chaotic = a.verdict.chaotic;
   ci.example_peak_share = a.spectrum.peak_share;

@@ -331,8 +331,12 @@ IntegrationSummary integrate_hybrid(const HybridSystem& system, std::vector<doub
   try {
     if (options.stepper == StepperKind::kRosenbrock4) {
       s = run<detail::Rosenbrock4Stepper<ModeRhs>>(system, x, mode, options, observer);
+    } else if (options.step_control == StepControl::kOdeint) {
+      using Odeint = boost::numeric::odeint::default_step_adjuster<double, double>;
+      s = run<detail::Dopri5Stepper<ModeRhs, Odeint>>(system, x, mode, options, observer);
     } else {
-      s = run<detail::Dopri5Stepper<ModeRhs>>(system, x, mode, options, observer);
+      s = run<detail::Dopri5Stepper<ModeRhs, detail::PiStepAdjuster>>(system, x, mode, options,
+                                                                     observer);
     }
   } catch (const Error&) {
     throw;

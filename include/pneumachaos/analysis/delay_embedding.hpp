@@ -50,6 +50,14 @@ class NeighbourIndex {
   /// Nearest vector to vector i with |i - j| > theiler and distance > resolution (exact
   /// repeats, as in quantised records, carry no direction). index == size() when none exists.
   [[nodiscard]] Neighbour nearest(std::size_t i, std::size_t theiler) const;
+  /// nearest(i, theiler) of every i in `queries`, in that order. The searches run in the
+  /// order of the tree's points, so that successive ones walk the same cells while they are
+  /// in cache; the answers are the same as one nearest() call each.
+  [[nodiscard]] std::vector<Neighbour> nearest_each(std::span<const std::size_t> queries,
+                                                    std::size_t theiler) const;
+  /// k_nearest(i, k, theiler) of every i in `queries`, in that order, searched as nearest_each.
+  [[nodiscard]] std::vector<std::vector<Neighbour>> k_nearest_each(
+      std::span<const std::size_t> queries, std::size_t k, std::size_t theiler) const;
   /// Up to k nearest under the same rules, nearest first.
   [[nodiscard]] std::vector<Neighbour> k_nearest(std::size_t i, std::size_t k,
                                                  std::size_t theiler) const;
@@ -58,6 +66,9 @@ class NeighbourIndex {
   [[nodiscard]] std::size_t size() const;
 
  private:
+  /// Positions in `queries` in the order their vectors are stored in the tree.
+  [[nodiscard]] std::vector<std::size_t> search_order(std::span<const std::size_t> queries) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

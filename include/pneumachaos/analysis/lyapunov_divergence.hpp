@@ -1,7 +1,8 @@
 #pragma once
 // Largest Lyapunov exponent from the average divergence of nearby trajectories (Rosenstein,
 // Collins & De Luca 1993, Physica D 65; Kantz 1994, Phys. Lett. A 185), with the linear
-// region of the divergence curve found automatically and an uncertainty from a jackknife.
+// region of the divergence curve found automatically and an uncertainty from what varies:
+// blocks of references, the fit window, and contiguous segments of the record.
 //
 // Beyond the references: for oversampled flows each neighbour is aligned with its reference
 // in continuous time (cubic interpolation, a Newton step along the local tangent), so the
@@ -31,6 +32,10 @@ struct DivergenceOptions {
   std::size_t typical_period = 0;  ///< samples per oscillation; 0: mean_maxima_spacing
   double slope_tolerance = 0.2;    ///< relative spread of segment slopes within the region
   std::size_t jackknife_blocks = 10;
+  /// Contiguous segments of the record (groups of jackknife blocks) on which the exponent is
+  /// also fitted separately, each with its own linear region; their spread is part of the
+  /// uncertainty (docs/analysis.md "Divergence exponent's uncertainty"). 2..jackknife_blocks.
+  std::size_t segments = 5;
   void validate(std::size_t n_samples) const;
 };
 
@@ -41,7 +46,18 @@ struct DivergenceResult {
   double slope_per_step = 0.0;
   double intercept = 0.0;
   double lambda_per_s = 0.0;       ///< slope * rate
-  double uncertainty_per_s = 0.0;  ///< jackknife standard error, with the fit window's sensitivity
+  /// The value's uncertainty: the slope's (below) and the spread of the segments' exponents,
+  /// in quadrature; +-1.96 of it is meant as a 95 % interval (docs/analysis.md "Divergence
+  /// exponent's uncertainty").
+  double uncertainty_per_s = 0.0;
+  /// The chosen window's slope alone: jackknife standard error over blocks of references and
+  /// the change when the window is narrowed. Says whether the curve rises (the verdict's
+  /// test), not how well the rise measures the exponent.
+  double slope_uncertainty_per_s = 0.0;
+  /// Slope of each segment's own curve (per step, record order), on its own linear region or,
+  /// without one, on the record's.
+  std::vector<double> segment_slopes_per_step;
+  std::size_t segments_without_region = 0;
   std::size_t references = 0;
   bool aligned = false;
   bool found_linear_region = false;  ///< false: no rising region (not chaotic, or too short)

@@ -35,7 +35,9 @@ struct VerdictOptions {
   double min_rest_share = 0.02;
   /// Steady: the last half varies (std) by at most this fraction of max(|mean|, range).
   double steady_variation = 0.01;
-  /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its uncertainty.
+  /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its slope's
+  /// uncertainty (the curve rises significantly; docs/analysis.md "Divergence exponent's
+  /// uncertainty").
   double lyapunov_sigmas = 3.0;
   /// The 0-1 test's K tends to 0 for regular and to 1 for chaotic (or stochastic) dynamics;
   /// the midpoint splits them.
@@ -60,6 +62,7 @@ struct RegimeEvidence {
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;
   double lyapunov_per_s = 0.0, lyapunov_uncertainty_per_s = 0.0;
+  double lyapunov_slope_uncertainty_per_s = 0.0;  ///< the chosen window's slope alone
   double broadband_share = 0.0, late_acf = 0.0;
   double determinism = 0.0;  ///< Cao's max |E2 - 1| (reported)
   bool zero_one_run = false;

@@ -3,7 +3,6 @@
 // records): numbered lines without blanks and comments, trimmed fields, "name[unit]" headers,
 // column lookup and strict number cells whose errors name file:line:column.
 
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,7 +31,8 @@ class CsvLines {
   [[nodiscard]] std::size_t number() const { return number_; }
 
  private:
-  std::istringstream in_;
+  std::string text_;
+  std::size_t pos_ = 0;  ///< start of the next line in text_
   std::size_t number_ = 0;
 };
 

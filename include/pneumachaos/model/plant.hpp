@@ -22,6 +22,11 @@ enum class ContactMode : std::int8_t {
   kSlidePos = 2,  ///< sliding with v > 0
   kSlideNeg = 3,  ///< sliding with v < 0
   kAtStop = 4,    ///< piston held against the stop at x = 0
+  /// Smooth friction model moving with v >= 0 (v <= 0): |v| is integrated as +v (-v), its
+  /// smooth continuation, and the crossing of v = 0 is an event that flips the branch, so no
+  /// step straddles the kink of |v| (docs/model.md, "Friction"; docs/performance.md).
+  kSmoothPos = 5,
+  kSmoothNeg = 6,
 };
 
 /// Quantities derived from a state, for output and analysis.
