@@ -244,6 +244,25 @@ TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
   y[R.guide_z] = 5e-5;
   expect_jacobian_matches_differences(rig, rig.sliding_mode(+1), y);
 
+  // Generalized Maxwell-slip seal: elements below, on the way to and past their slip
+  // deflections (about 0.1, 0.2, 0.3, 0.4 mm at this speed), away from the weight's kinks.
+  Scenario g = default_scenario();
+  g.friction.kind = FrictionKind::kGms;
+  const Plant gms(g);
+  std::vector<double> u = gms.initial_state();
+  const StateLayout& G = gms.layout();
+  ASSERT_EQ(G.seal_z_count, 4u);
+  u[G.x] = 0.42;
+  u[G.v] = 0.06;
+  u[G.P1] = 3.2e5;
+  u[G.P2] = 2.6e5;
+  const double z_gms[] = {3e-5, 1e-4, 2e-4, 5e-4};
+  for (std::size_t i = 0; i < 4; ++i) u[G.seal_z + i] = z_gms[i];
+  u[G.load_x] = 0.419;
+  u[G.load_v] = 0.05;
+  u[G.guide_z] = 5e-5;
+  expect_jacobian_matches_differences(gms, gms.sliding_mode(+1), u);
+
   // The supply line's P0 couples into P1 through S1 (forward and back-flow) and is fed by
   // the regulator; with the energy equation the back-flow carries T1; S1's opening fraction
   // scales its flow.

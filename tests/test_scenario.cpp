@@ -68,7 +68,7 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(error_of([&] { apply_toml(s, "[load]\nmass_kg = -1\n", "my.toml"); }),
             "my.toml:2:11: load.mass_kg: -1 kg is out of range: expected > 0");
   EXPECT_EQ(error_of([&] { apply_toml(s, "[friction]\nmodel = 3\n", "f.toml"); }),
-            "f.toml:2:9: friction.model: expected one of classic | stribeck | lugre, got the "
+            "f.toml:2:9: friction.model: expected one of classic | stribeck | lugre | gms, got the "
             "number 3");
   EXPECT_EQ(
       error_of([&] { apply_toml(s, "[cylinder]\nbore = 40\n", "c.toml"); }).rfind("c.toml:2:", 0),

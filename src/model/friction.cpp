@@ -31,6 +31,8 @@ std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params)
       return std::make_unique<StictionFriction>(params);
     case FrictionKind::kLuGre:
       return std::make_unique<LuGreFriction>(params);
+    case FrictionKind::kGms:
+      return std::make_unique<GmsFriction>(params);
   }
   return nullptr;
 }
@@ -43,6 +45,8 @@ const char* friction_kind_name(FrictionKind kind) {
       return "stribeck";
     case FrictionKind::kLuGre:
       return "lugre";
+    case FrictionKind::kGms:
+      return "gms";
   }
   return "?";
 }

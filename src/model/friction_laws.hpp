@@ -136,7 +136,14 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.viscous_Ns_per_m * speed);
 }
 
-/// Rates of the internal states while the contact rests: LuGre's bristles hold still; the
+}  // namespace pneumachaos::friction_law
+
+#include "friction_gms_law.hpp"
+
+namespace pneumachaos::friction_law {
+
+/// Rates of the internal states while the contact rests: LuGre's bristles and the GMS
+/// elements hold still; the
 /// lagged Stribeck weight recovers towards its value at v = 0, which is 1.
 template <typename T, typename P>
 void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
@@ -150,6 +157,7 @@ template <typename T, typename P>
 T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction,
                  const T* z, T* dz) {
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
+  if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz, direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);
   return stiction_sliding_N(p, in, direction);
 }

@@ -54,4 +54,20 @@ class StribeckLagFriction final : public FrictionModel {
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 
+/// Generalized Maxwell-slip (Al-Bender, Lampaert & Swevers 2005) in the smooth state-equation
+/// form of docs/model.md: N elements with deflections z_i, F = sum k_i z_i + B v.
+class GmsFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] std::size_t state_count() const override;
+  [[nodiscard]] const char* state_name() const override { return "z_gms"; }
+  [[nodiscard]] bool has_stiction() const override { return false; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  void steady_state(const FrictionInput& in, std::span<double> z) const override;
+};
+
 }  // namespace pneumachaos

@@ -15,6 +15,28 @@ constexpr double kMeterOutS2 = 0.35e-6;
 constexpr double kMeterInS1 = 0.35e-6;
 constexpr double kMeterInS2 = 20e-6;
 
+// The GMS keys' own ranges, again for scenarios built in code; the elements' slip deflections
+// are shares of Fc and up, so Fc must be positive.
+void check_gms(const FrictionParams& f, const std::string& prefix) {
+  if (f.gms_elements < 1 || f.gms_elements > kMaxGmsElements) {
+    throw Error(prefix + "gms_elements",
+                fmt::format("{} is out of range: expected 1 to {}", f.gms_elements,
+                            kMaxGmsElements));
+  }
+  if (!(f.gms_stiffness_N_per_m > 0.0)) {
+    throw Error(prefix + "gms_stiffness_N_per_m",
+                fmt::format("{} N/m is out of range: expected > 0", f.gms_stiffness_N_per_m));
+  }
+  if (!(f.gms_attraction_length_m > 0.0)) {
+    throw Error(prefix + "gms_attraction_length_um",
+                fmt::format("{} um is out of range: expected > 0",
+                            f.gms_attraction_length_m * 1e6));
+  }
+  if (!(f.coulomb_N > 0.0)) {
+    throw Error(prefix + "Fc_N", "the gms model needs Fc > 0: its elements slip at shares of it");
+  }
+}
+
 void check_friction(const FrictionParams& f, const std::string& prefix) {
   if (f.static_N < f.coulomb_N) {
     throw Error(prefix + "Fs_N",
@@ -27,6 +49,7 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
                                                "= \"stribeck\", not \"{}\"",
                                                prefix, friction_kind_name(f.kind)));
   }
+  if (f.kind == FrictionKind::kGms) check_gms(f, prefix);
   if (f.kind != FrictionKind::kClassic && f.static_gain_N_per_Pa < f.coulomb_gain_N_per_Pa) {
     throw Error(prefix + "Fs_gain_N_per_MPa",
                 "must be >= " + prefix + "Fc_gain_N_per_MPa so that Fs >= Fc at every pressure");

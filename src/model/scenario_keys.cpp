@@ -40,6 +40,7 @@ const Range kNonNegative{0.0, kInf, false, false};
 struct KeySpec {
   KeyInfo info;
   bool is_word = false;
+  bool whole = false;  // a count: only whole numbers
   double scale = 1.0;  // user unit -> SI
   Range range;
   std::function<void(Scenario&, double)> set_number;
@@ -84,6 +85,26 @@ KeySpec word(std::string key, std::string description, std::vector<std::string> 
   return s;
 }
 
+// The generalized Maxwell-slip keys (docs/model.md, "Friction"); the element count must be whole.
+template <typename Ref>
+void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref) {
+  KeySpec count = number(
+      prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)", 1.0,
+      Range{1.0, static_cast<double>(kMaxGmsElements)},
+      [ref](auto& s) -> auto& { return ref(s).gms_elements; });
+  count.whole = true;
+  count.set_number = [ref](Scenario& sc, double n) { ref(sc).gms_elements = static_cast<int>(n); };
+  keys.push_back(std::move(count));
+  keys.push_back(number(
+      prefix + "gms_stiffness_N_per_m", "N/m",
+      "gms: total presliding stiffness, in equal shares over the elements", 1.0, kPositive,
+      [ref](auto& s) -> auto& { return ref(s).gms_stiffness_N_per_m; }));
+  keys.push_back(number(
+      prefix + "gms_attraction_length_um", "um",
+      "gms: sliding distance over which a slipping element reaches its share of the level", 1e-6,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).gms_attraction_length_m; }));
+}
+
 // The same friction keys serve the piston seal ("friction.") and the load guide
 // ("guide_friction."), so they are generated from one list.
 template <typename Ref>
@@ -91,7 +112,7 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
                        const std::string& what, Ref ref) {
   keys.push_back(word<FrictionKind>(
       prefix + "model", "friction model of the " + what,
-      {"classic", "stribeck", "lugre"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
+      {"classic", "stribeck", "lugre", "gms"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
   keys.push_back(number(
       prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
@@ -113,6 +134,7 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
   keys.push_back(number(
       prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+  add_gms_keys(keys, prefix, ref);
   keys.push_back(word<FrictionMemory>(
       prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
       {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
@@ -362,6 +384,9 @@ void apply_setting(Scenario& scenario, const std::string& key, const SettingValu
   if (!spec.range.contains(*number)) {
     throw Error(place, fmt::format("{} {} is out of range: expected {}", *number, spec.info.unit,
                                    spec.info.range));
+  }
+  if (spec.whole && *number != std::floor(*number)) {
+    throw Error(place, fmt::format("expected a whole number, got {}", *number));
   }
   spec.set_number(scenario, *number * spec.scale);
 }

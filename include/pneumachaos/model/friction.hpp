@@ -8,7 +8,7 @@
 
 namespace pneumachaos {
 
-enum class FrictionKind { kClassic, kStribeck, kLuGre };
+enum class FrictionKind { kClassic, kStribeck, kLuGre, kGms };
 
 /// Frictional memory of the stribeck model: kLag makes the Stribeck drop follow the velocity
 /// with a first-order lag (Hess & Soom 1990; docs/model.md, "Friction").
@@ -21,6 +21,9 @@ struct TextureMode {
   double wavenumber_per_m = 0.0;
   double phase = 0.0;
 };
+
+/// Most elements a GMS seal may have (each is one ODE state).
+inline constexpr int kMaxGmsElements = 10;
 
 /// Parameters shared by all friction models; each model reads the ones it needs.
 /// Forces in N, velocities in m/s, pressures in Pa.
@@ -41,6 +44,12 @@ struct FrictionParams {
   FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
   /// Time constant of the Stribeck drop's lag behind the velocity (memory = kLag).
   double lag_time_s = 0.005;
+  /// Generalized Maxwell-slip (kind = kGms; docs/model.md, "Friction"): number of elements,
+  /// their total presliding stiffness (equal shares) and the sliding distance over which a
+  /// slipping element is attracted to its share of the Stribeck level.
+  int gms_elements = 4;  ///< 1 to kMaxGmsElements
+  double gms_stiffness_N_per_m = 1.0e5;
+  double gms_attraction_length_m = 250e-6;
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
   }
