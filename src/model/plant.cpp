@@ -13,6 +13,7 @@ using plant_detail::kGuide;
 using plant_detail::kSeal;
 using plant_detail::mode_of;
 using plant_detail::moving;
+using plant_detail::quasi_static;
 
 void set_mode(Mode& m, std::size_t contact, ContactMode c) {
   m.value[contact] = static_cast<std::int8_t>(c);
@@ -100,6 +101,32 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
+// Dimensionless, so the two conditions of entry can share one function: the contact enters
+// where both its relaxation rate has reached the threshold and its bristle has settled on the
+// steady state within kSettled (the force the limit drops, sigma0 |z - z0|, is then below
+// kSettled g: a bristle still catching up after a fast start keeps the full equation).
+double Plant::quasi_static_switch(std::size_t contact, ContactMode m,
+                                  std::span<const double> x) const {
+  constexpr double kSettled = 1e-4;
+  const FrictionModel& f = friction_of(contact);
+  const FrictionInput in = friction_input<double>(contact, x);
+  const double ratio = friction_law::lugre_relaxation_rate(f.params(), in, direction_of(m)) /
+                       f.params().quasi_static_rate_per_s;
+  if (quasi_static(m)) return ratio - 0.5;
+  double z0 = 0.0;
+  f.steady_state(in, std::span<double>(&z0, 1));
+  const double z = x[contact == kSeal ? layout_.seal_z : layout_.guide_z];
+  return std::max(1.0 - ratio, std::abs(z - z0) / (kSettled * std::abs(z0)) - 1.0);
+}
+
+// On the steady state the full LuGre force equals the quasi-static one (dz/dt = 0 there), so
+// the force is continuous where the contact leaves the limit.
+void Plant::settle_bristle(std::size_t contact, std::span<double> x) const {
+  const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
+  friction_of(contact).steady_state(friction_input<double>(contact, std::span<const double>(x)),
+                                    x.subspan(z0, 1));
+}
+
 double Plant::head_pressure_rate(std::span<const double> x) const {
   if (!layout_.has_temperatures()) return head_chamber_rate(x);
   std::vector<double> rates(layout_.size);
@@ -125,7 +152,15 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
   };
   for (std::size_t c = 0; c < contacts_; ++c) {
     const ContactMode m = mode_of(mode, c);
-    if (direction_of(m) != 0) add(EventType::kVelocityZero, c);
+    // The quasi-static limit is left (at half its rate) before v can reach 0.
+    if (quasi_static(m)) {
+      add(EventType::kQuasiExit, c);
+    } else if (direction_of(m) != 0) {
+      add(EventType::kVelocityZero, c);
+    }
+    if ((m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) &&
+        friction_of(c).params().quasi_static_rate_per_s > 0.0)
+      add(EventType::kQuasiEnter, c);
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
@@ -160,6 +195,10 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
         break;
       case EventType::kStrokeEnd:
         g[i] = geometry_.stroke_m - x[L.x];
+        break;
+      case EventType::kQuasiEnter:
+      case EventType::kQuasiExit:
+        g[i] = quasi_static_switch(c, mode_of(mode, c), x);
         break;
     }
   }
@@ -220,6 +259,17 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       set_mode(mode, c, rest_mode(c, x, true));
       out.kind = EventKind::kStopHit;
       break;
+    case EventType::kQuasiEnter:
+    case EventType::kQuasiExit: {
+      const int d = direction_of(mode_of(mode, c));
+      const bool enter = ev.type == EventType::kQuasiEnter;
+      set_mode(mode, c,
+               enter ? (d > 0 ? ContactMode::kQuasiPos : ContactMode::kQuasiNeg)
+                     : (d > 0 ? ContactMode::kSmoothPos : ContactMode::kSmoothNeg));
+      settle_bristle(c, x);
+      out.kind = EventKind::kModeSwitch;
+      break;
+    }
     case EventType::kStrokeEnd:
       x[ix] = geometry_.stroke_m;
       out.kind = EventKind::kTerminal;

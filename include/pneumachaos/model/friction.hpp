@@ -41,6 +41,10 @@ struct FrictionParams {
   FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
   /// Time constant of the Stribeck drop's lag behind the velocity (memory = kLag).
   double lag_time_s = 0.005;
+  /// LuGre in the Plant: the bristle relaxation rate sigma0 |v| / g(v) [1/s] above which the
+  /// bristle is taken on its steady state z = g sgn v / sigma0 (left again below half of it;
+  /// docs/model.md, "Friction"); 0: never. The bristle's stiffness bounds an explicit step.
+  double quasi_static_rate_per_s = 4000.0;
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
   }
