@@ -122,14 +122,6 @@ T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz, int br
   return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
 }
 
-/// LuGre's bristle relaxation rate sigma0 |v| / g(v) on a branch (as lugre_N): dz/dt =
-/// v - rate * z, so z settles on its steady state g sgn v / sigma0 within ~1/rate.
-template <typename T, typename P>
-T lugre_relaxation_rate(const P& p, const BasicFrictionInput<T>& in, int branch) {
-  const T speed = static_cast<double>(branch) * in.v_m_per_s;
-  return p.sigma0_N_per_m * speed / stribeck_level_N(p, in, speed, true);
-}
-
 /// LuGre's quasi-static limit on a branch (docs/model.md, "Friction"): the bristle on its
 /// steady state z = g(v) sgn v / sigma0, where dz/dt = 0 and the force is the steady
 /// g(v) sgn v + sigma2 v. The state z is held (dz = 0); the Plant sets it on the steady

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "plant_equations.hpp"
 
@@ -17,6 +18,20 @@ using plant_detail::quasi_static;
 
 void set_mode(Mode& m, std::size_t contact, ContactMode c) {
   m.value[contact] = static_cast<std::int8_t>(c);
+}
+
+// An upper bound of LuGre's relaxation rate sigma0 |v| / g from a lower bound of g (its
+// smaller level, the pressure term only where it lowers g, the texture at its deepest), with
+// no exp or sin: the switching function checks it at every step of every run (docs/performance.md).
+double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, int direction) {
+  double texture_low = 1.0;
+  for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);
+  const double gauge = std::min(in.gauge_sum_Pa, 0.0);
+  const double level_low =
+      std::min(p.coulomb_N + p.coulomb_gain_N_per_Pa * gauge, p.static_N + p.static_gain_N_per_Pa * gauge);
+  const double g_low = level_low * texture_low;
+  if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
+  return p.sigma0_N_per_m * direction * in.v_m_per_s / g_low;
 }
 
 }  // namespace
@@ -108,13 +123,20 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
 double Plant::quasi_static_switch(std::size_t contact, ContactMode m,
                                   std::span<const double> x) const {
   constexpr double kSettled = 1e-4;
-  const FrictionModel& f = friction_of(contact);
+  const FrictionParams& p = friction_of(contact).params();
   const FrictionInput in = friction_input<double>(contact, x);
-  const double ratio = friction_law::lugre_relaxation_rate(f.params(), in, direction_of(m)) /
-                       f.params().quasi_static_rate_per_s;
+  const int d = direction_of(m);
+  const double on = p.quasi_static_rate_per_s;
+  // Far from the threshold (most steps) the bound decides the sign alone; it is positive
+  // there, as the exact function is, so the switch is located on the exact function.
+  if (!quasi_static(m)) {
+    const double bound = relaxation_rate_bound(p, in, d);
+    if (bound < on) return 1.0 - bound / on;
+  }
+  const double d_g = d * friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
+  const double ratio = p.sigma0_N_per_m * in.v_m_per_s / d_g / on;  // rate / threshold
   if (quasi_static(m)) return ratio - 0.5;
-  double z0 = 0.0;
-  f.steady_state(in, std::span<double>(&z0, 1));
+  const double z0 = d_g / p.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
   const double z = x[contact == kSeal ? layout_.seal_z : layout_.guide_z];
   return std::max(1.0 - ratio, std::abs(z - z0) / (kSettled * std::abs(z0)) - 1.0);
 }
