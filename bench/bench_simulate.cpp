@@ -169,7 +169,9 @@ BENCHMARK(BM_Sliding)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigChaotic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigTextured)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigFastSliding)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_VirtualRigQuasiStatic)->ArgsProduct({{0, 1}, {200, 440}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigQuasiStatic)
+    ->ArgsProduct({{0, 1}, {200, 440}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigStepControl)
     ->Args({0, 35})
     ->Args({1, 35})

@@ -7,8 +7,8 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
-#include "tight_options.hpp"
 #include "stuck_samples.hpp"
+#include "tight_options.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -160,8 +160,8 @@ void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
 /// the model's internal states (none for the stiction models). `quasi_static`: LuGre in its
 /// quasi-static limit.
 template <typename T, typename P>
-T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction,
-                 const T* z, T* dz, bool quasi_static = false) {
+T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction, const T* z, T* dz,
+                 bool quasi_static = false) {
   if (quasi_static) return lugre_quasi_static_N(p, in, dz[0], direction);
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);

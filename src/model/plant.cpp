@@ -27,8 +27,8 @@ double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, i
   double texture_low = 1.0;
   for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);
   const double gauge = std::min(in.gauge_sum_Pa, 0.0);
-  const double level_low =
-      std::min(p.coulomb_N + p.coulomb_gain_N_per_Pa * gauge, p.static_N + p.static_gain_N_per_Pa * gauge);
+  const double level_low = std::min(p.coulomb_N + p.coulomb_gain_N_per_Pa * gauge,
+                                    p.static_N + p.static_gain_N_per_Pa * gauge);
   const double g_low = level_low * texture_low;
   if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
   return p.sigma0_N_per_m * direction * in.v_m_per_s / g_low;

@@ -26,8 +26,7 @@ inline bool quasi_static(ContactMode m) {
 inline int direction_of(ContactMode m) {
   if (m == ContactMode::kSlidePos || m == ContactMode::kSmoothPos || m == ContactMode::kQuasiPos)
     return 1;
-  return m == ContactMode::kSlideNeg || m == ContactMode::kSmoothNeg ||
-                 m == ContactMode::kQuasiNeg
+  return m == ContactMode::kSlideNeg || m == ContactMode::kSmoothNeg || m == ContactMode::kQuasiNeg
              ? -1
              : 0;
 }
