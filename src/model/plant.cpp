@@ -180,9 +180,10 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     } else if (direction_of(m) != 0) {
       add(EventType::kVelocityZero, c);
     }
+    const FrictionParams& p = friction_of(c).params();
     if ((m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) &&
-        friction_of(c).params().quasi_static_rate_per_s > 0.0)
-      add(EventType::kQuasiEnter, c);
+        p.kind == FrictionKind::kLuGre && p.quasi_static_rate_per_s > 0.0)
+      add(EventType::kQuasiEnter, c);  // LuGre's alone: other smooth models have no such limit
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
