@@ -2,7 +2,8 @@
 // rig (one rigid mass, Stribeck seal) sliding and in stick-slip, LuGre on both steppers, and
 // the default two-mass virtual rig, plain and as a sweep runs it (textured bore). Each prints
 // its right-hand-side evaluations and steps per run; StepControl compares the step-size
-// controllers in one process (docs/performance.md, "Simulation (second round)").
+// controllers in one process (docs/performance.md, "Simulation (second round)"), QuasiStatic
+// LuGre's full bristle equation with its quasi-static limit ("Simulation (third round)").
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
 #include <benchmark/benchmark.h>
 
@@ -116,6 +117,29 @@ void BM_VirtualRigFastSliding(benchmark::State& state) {
   count_work(state, last);
 }
 
+// LuGre's quasi-static limit (docs/model.md, "Friction") off (first argument 0: the full
+// bristle equation throughout, as before it) and on (1, the default) in one process, at the
+// sliding points S2 = 2.0 and 4.4 mm^2 (second argument in 0.01 mm^2) of the map.
+void BM_VirtualRigQuasiStatic(benchmark::State& state) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = static_cast<double>(state.range(1)) * 1e-8;
+  s.run.duration_s = 10.0;
+  if (state.range(0) == 0) {
+    s.friction.quasi_static_rate_per_s = 0.0;
+    s.load.guide_friction.quasi_static_rate_per_s = 0.0;
+  }
+  const Plant plant(s);
+  const auto options = s.run;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    const auto r = simulate(plant, options);
+    benchmark::DoNotOptimize(r.series.size());
+    last = r.summary;
+  }
+  state.SetLabel(state.range(0) == 0 ? "full bristle equation" : "quasi-static limit (default)");
+  count_work(state, last);
+}
+
 // The default rig integrated without output, with the default step-size controller
 // (Boost.Odeint's, first argument 0) and Hairer's PI controller (1, tried and not adopted:
 // docs/performance.md), in one process; second argument S2 in 0.01 mm^2 (the chaotic
@@ -145,6 +169,9 @@ BENCHMARK(BM_Sliding)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigChaotic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigTextured)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigFastSliding)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigQuasiStatic)
+    ->ArgsProduct({{0, 1}, {200, 440}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigStepControl)
     ->Args({0, 35})
     ->Args({1, 35})

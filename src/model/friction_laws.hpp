@@ -122,6 +122,18 @@ T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz, int br
   return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
 }
 
+/// LuGre's quasi-static limit on a branch (docs/model.md, "Friction"): the bristle on its
+/// steady state z = g(v) sgn v / sigma0, where dz/dt = 0 and the force is the steady
+/// g(v) sgn v + sigma2 v. The state z is held (dz = 0); the Plant sets it on the steady
+/// state when the contact enters and leaves this limit.
+template <typename T, typename P>
+T lugre_quasi_static_N(const P& p, const BasicFrictionInput<T>& in, T& dz, int branch) {
+  const double d = branch;
+  const T speed = d * in.v_m_per_s;
+  dz = T(0.0);
+  return d * stribeck_level_N(p, in, speed, true) + p.viscous_Ns_per_m * in.v_m_per_s;
+}
+
 /// Hess-Soom lag (docs/model.md): the Stribeck weight s lags the velocity by tau, writes
 /// ds/dt = (exp(-(|v|/vs)^delta) - s) / tau; F = [Fc + (Fs - Fc) s] sgn v + B v while
 /// sliding in `direction`.
@@ -152,10 +164,12 @@ void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
 }
 
 /// The force of whichever model `p.kind` names, while the contact moves; z and dz point to
-/// the model's internal states (none for the stiction models).
+/// the model's internal states (none for the stiction models). `quasi_static`: LuGre in its
+/// quasi-static limit.
 template <typename T, typename P>
-T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction,
-                 const T* z, T* dz) {
+T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction, const T* z, T* dz,
+                 bool quasi_static = false) {
+  if (quasi_static) return lugre_quasi_static_N(p, in, dz[0], direction);
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
   if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz, direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "plant_equations.hpp"
 
@@ -13,9 +14,24 @@ using plant_detail::kGuide;
 using plant_detail::kSeal;
 using plant_detail::mode_of;
 using plant_detail::moving;
+using plant_detail::quasi_static;
 
 void set_mode(Mode& m, std::size_t contact, ContactMode c) {
   m.value[contact] = static_cast<std::int8_t>(c);
+}
+
+// An upper bound of LuGre's relaxation rate sigma0 |v| / g from a lower bound of g (its
+// smaller level, the pressure term only where it lowers g, the texture at its deepest), with
+// no exp or sin: the switching function checks it at every step of every run (docs/performance.md).
+double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, int direction) {
+  double texture_low = 1.0;
+  for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);
+  const double gauge = std::min(in.gauge_sum_Pa, 0.0);
+  const double level_low = std::min(p.coulomb_N + p.coulomb_gain_N_per_Pa * gauge,
+                                    p.static_N + p.static_gain_N_per_Pa * gauge);
+  const double g_low = level_low * texture_low;
+  if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
+  return p.sigma0_N_per_m * direction * in.v_m_per_s / g_low;
 }
 
 }  // namespace
@@ -100,6 +116,39 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
                            nz == 0 ? std::span<const double>{} : x.subspan(z0, nz));
 }
 
+// Dimensionless, so the two conditions of entry can share one function: the contact enters
+// where both its relaxation rate has reached the threshold and its bristle has settled on the
+// steady state within kSettled (the force the limit drops, sigma0 |z - z0|, is then below
+// kSettled g: a bristle still catching up after a fast start keeps the full equation).
+double Plant::quasi_static_switch(std::size_t contact, ContactMode m,
+                                  std::span<const double> x) const {
+  constexpr double kSettled = 1e-4;
+  const FrictionParams& p = friction_of(contact).params();
+  const FrictionInput in = friction_input<double>(contact, x);
+  const int d = direction_of(m);
+  const double on = p.quasi_static_rate_per_s;
+  // Far from the threshold (most steps) the bound decides the sign alone; it is positive
+  // there, as the exact function is, so the switch is located on the exact function.
+  if (!quasi_static(m)) {
+    const double bound = relaxation_rate_bound(p, in, d);
+    if (bound < on) return 1.0 - bound / on;
+  }
+  const double d_g = d * friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
+  const double ratio = p.sigma0_N_per_m * in.v_m_per_s / d_g / on;  // rate / threshold
+  if (quasi_static(m)) return ratio - 0.5;
+  const double z0 = d_g / p.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
+  const double z = x[contact == kSeal ? layout_.seal_z : layout_.guide_z];
+  return std::max(1.0 - ratio, std::abs(z - z0) / (kSettled * std::abs(z0)) - 1.0);
+}
+
+// On the steady state the full LuGre force equals the quasi-static one (dz/dt = 0 there), so
+// the force is continuous where the contact leaves the limit.
+void Plant::settle_bristle(std::size_t contact, std::span<double> x) const {
+  const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
+  friction_of(contact).steady_state(friction_input<double>(contact, std::span<const double>(x)),
+                                    x.subspan(z0, 1));
+}
+
 double Plant::head_pressure_rate(std::span<const double> x) const {
   if (!layout_.has_temperatures()) return head_chamber_rate(x);
   std::vector<double> rates(layout_.size);
@@ -125,7 +174,16 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
   };
   for (std::size_t c = 0; c < contacts_; ++c) {
     const ContactMode m = mode_of(mode, c);
-    if (direction_of(m) != 0) add(EventType::kVelocityZero, c);
+    // The quasi-static limit is left (at half its rate) before v can reach 0.
+    if (quasi_static(m)) {
+      add(EventType::kQuasiExit, c);
+    } else if (direction_of(m) != 0) {
+      add(EventType::kVelocityZero, c);
+    }
+    const FrictionParams& p = friction_of(c).params();
+    if ((m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) &&
+        p.kind == FrictionKind::kLuGre && p.quasi_static_rate_per_s > 0.0)
+      add(EventType::kQuasiEnter, c);  // LuGre's alone: other smooth models have no such limit
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
@@ -160,6 +218,10 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
         break;
       case EventType::kStrokeEnd:
         g[i] = geometry_.stroke_m - x[L.x];
+        break;
+      case EventType::kQuasiEnter:
+      case EventType::kQuasiExit:
+        g[i] = quasi_static_switch(c, mode_of(mode, c), x);
         break;
     }
   }
@@ -220,6 +282,17 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       set_mode(mode, c, rest_mode(c, x, true));
       out.kind = EventKind::kStopHit;
       break;
+    case EventType::kQuasiEnter:
+    case EventType::kQuasiExit: {
+      const int d = direction_of(mode_of(mode, c));
+      const bool enter = ev.type == EventType::kQuasiEnter;
+      set_mode(mode, c,
+               enter ? (d > 0 ? ContactMode::kQuasiPos : ContactMode::kQuasiNeg)
+                     : (d > 0 ? ContactMode::kSmoothPos : ContactMode::kSmoothNeg));
+      settle_bristle(c, x);
+      out.kind = EventKind::kModeSwitch;
+      break;
+    }
     case EventType::kStrokeEnd:
       x[ix] = geometry_.stroke_m;
       out.kind = EventKind::kTerminal;

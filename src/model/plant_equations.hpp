@@ -20,9 +20,15 @@ inline ContactMode mode_of(const Mode& m, std::size_t contact) {
   return static_cast<ContactMode>(m.value[contact]);
 }
 inline bool moving(ContactMode m) { return m != ContactMode::kStuck && m != ContactMode::kAtStop; }
+inline bool quasi_static(ContactMode m) {
+  return m == ContactMode::kQuasiPos || m == ContactMode::kQuasiNeg;
+}
 inline int direction_of(ContactMode m) {
-  if (m == ContactMode::kSlidePos || m == ContactMode::kSmoothPos) return 1;
-  return m == ContactMode::kSlideNeg || m == ContactMode::kSmoothNeg ? -1 : 0;
+  if (m == ContactMode::kSlidePos || m == ContactMode::kSmoothPos || m == ContactMode::kQuasiPos)
+    return 1;
+  return m == ContactMode::kSlideNeg || m == ContactMode::kSmoothNeg || m == ContactMode::kQuasiNeg
+             ? -1
+             : 0;
 }
 
 }  // namespace plant_detail
@@ -63,7 +69,8 @@ T Plant::friction_force(std::size_t contact, ContactMode m, std::span<const T> x
     return T(0.0);
   }
   return friction_law::moving_force_N(f.params(), friction_input(contact, x),
-                                      plant_detail::direction_of(m), z, dz.data());
+                                      plant_detail::direction_of(m), z, dz.data(),
+                                      plant_detail::quasi_static(m));
 }
 
 // What S1 draws from: the supply line's pressure P0 when it has a volume, else the

@@ -139,6 +139,11 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
       {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
   keys.push_back(number(
+      prefix + "quasi_static_rate", "1/s",
+      "lugre only: bristle relaxation rate sigma0 |v| / g above which the bristle is taken "
+      "on its steady state (0: never)",
+      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).quasi_static_rate_per_s; }));
+  keys.push_back(number(
       prefix + "lag_time_ms", "ms", "time constant of the Stribeck drop's lag (memory = lag)", 1e-3,
       kPositive, [ref](auto& s) -> auto& { return ref(s).lag_time_s; }));
   keys.push_back(number(

@@ -55,6 +55,7 @@ void count_event(EventCounts& c, EventKind kind) {
       ++c.stop_release;
       break;
     case EventKind::kTerminal:
+    case EventKind::kModeSwitch:
       break;
   }
 }

@@ -26,7 +26,17 @@ enum class StepperKind : std::uint8_t {
 };
 
 /// What an event did, as reported back to the integrator and counted in its Summary.
-enum class EventKind : std::uint8_t { kStick, kSlip, kReversal, kStopHit, kStopRelease, kTerminal };
+/// kModeSwitch: the same motion continues under another approximation (e.g. LuGre's
+/// quasi-static limit); not counted as stick, slip or reversal.
+enum class EventKind : std::uint8_t {
+  kStick,
+  kSlip,
+  kReversal,
+  kStopHit,
+  kStopRelease,
+  kTerminal,
+  kModeSwitch
+};
 
 struct EventOutcome {
   EventKind kind = EventKind::kSlip;

@@ -50,6 +50,10 @@ struct FrictionParams {
   int gms_elements = 4;  ///< 1 to kMaxGmsElements
   double gms_stiffness_N_per_m = 1.0e5;
   double gms_attraction_length_m = 250e-6;
+  /// LuGre in the Plant: the bristle relaxation rate sigma0 |v| / g(v) [1/s] above which the
+  /// bristle is taken on its steady state z = g sgn v / sigma0 (left again below half of it;
+  /// docs/model.md, "Friction"); 0: never. The bristle's stiffness bounds an explicit step.
+  double quasi_static_rate_per_s = 4000.0;
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
   }

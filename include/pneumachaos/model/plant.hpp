@@ -27,6 +27,11 @@ enum class ContactMode : std::int8_t {
   /// step straddles the kink of |v| (docs/model.md, "Friction"; docs/performance.md).
   kSmoothPos = 5,
   kSmoothNeg = 6,
+  /// LuGre moving with v > 0 (v < 0) fast enough that its bristle relaxes far quicker than
+  /// anything else moves: the bristle is taken on its steady state (quasi-static limit,
+  /// FrictionParams::quasi_static_rate_per_s; docs/model.md, "Friction").
+  kQuasiPos = 7,
+  kQuasiNeg = 8,
 };
 
 /// Quantities derived from a state, for output and analysis.
@@ -104,14 +109,16 @@ class Plant final : public HybridSystem {
     kBreakaway,
     kStopRelease,
     kStopHit,
-    kStrokeEnd
+    kStrokeEnd,
+    kQuasiEnter,  ///< a LuGre contact's relaxation rate rises to its quasi-static threshold
+    kQuasiExit    ///< ... falls to half of it
   };
   struct ActiveEvent {
     EventType type;
     std::uint8_t contact;
   };
   struct EventList {
-    std::array<ActiveEvent, 6> items{};
+    std::array<ActiveEvent, 8> items{};
     std::size_t count = 0;
   };
 
@@ -150,6 +157,16 @@ class Plant final : public HybridSystem {
   /// The mode of a contact at rest (v = 0) consistent with its forces.
   [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
                                       bool at_stop) const;
+  /// The quasi-static limit's switching function of a LuGre contact on its branch, negative
+  /// where it switches: while off, when its relaxation rate is above the threshold and its
+  /// bristle has settled; while on, when the rate falls below half the threshold.
+  [[nodiscard]] double quasi_static_switch(std::size_t contact, ContactMode m,
+                                           std::span<const double> x) const;
+  /// Puts a LuGre contact's bristle on its steady state (entering or leaving the limit).
+  void settle_bristle(std::size_t contact, std::span<double> x) const;
+  [[nodiscard]] const FrictionModel& friction_of(std::size_t contact) const {
+    return contact == 0 ? *seal_ : *guide_;
+  }
 
   CylinderGeometry geometry_;
   LoadParams load_;
