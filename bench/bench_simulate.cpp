@@ -41,6 +41,23 @@ void run(benchmark::State& state, Scenario s) {
   count_work(state, last);
 }
 
+// A 10 s run of the scenario as it stands (its own stroke and volumes), for the virtual rig.
+void run_rig(benchmark::State& state, Scenario s) {
+  s.run.duration_s = 10.0;
+  const Plant plant(s);
+  const auto options = s.run;
+  double simulated = 0.0;
+  IntegrationSummary last;
+  for (auto _ : state) {
+    const auto r = simulate(plant, options);
+    benchmark::DoNotOptimize(r.series.size());
+    simulated += r.summary.t_final_s;
+    last = r.summary;
+  }
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+  count_work(state, last);
+}
+
 void BM_Sliding(benchmark::State& state) { run(state, simple_rig_scenario()); }
 
 void BM_StickSlip(benchmark::State& state) {
@@ -63,22 +80,7 @@ void BM_SlidingLuGreRosenbrock(benchmark::State& state) {
 }
 
 // The default scenario: the two-mass virtual rig in chaotic oscillation, volumes frozen.
-void BM_VirtualRigChaotic(benchmark::State& state) {
-  const Plant plant(default_scenario());
-  Scenario s = default_scenario();
-  s.run.duration_s = 10.0;
-  const auto options = s.run;
-  double simulated = 0.0;
-  IntegrationSummary last;
-  for (auto _ : state) {
-    const auto r = simulate(plant, options);
-    benchmark::DoNotOptimize(r.series.size());
-    simulated += r.summary.t_final_s;
-    last = r.summary;
-  }
-  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  count_work(state, last);
-}
+void BM_VirtualRigChaotic(benchmark::State& state) { run_rig(state, default_scenario()); }
 
 // A run of a sweep of the default map: the map's seal variation gives both contacts a
 // four-mode texture along the bore (docs/sweep.md), whose sines the friction laws evaluate.
@@ -86,17 +88,7 @@ void BM_VirtualRigTextured(benchmark::State& state) {
   Scenario base = default_scenario();
   base.variation.friction_rel_sd = 0.03;
   base.variation.texture_rel = 0.02;
-  Scenario s = vary(base, run_seed(1, 0, 0));
-  s.run.duration_s = 10.0;
-  const Plant plant(s);
-  const auto options = s.run;
-  IntegrationSummary last;
-  for (auto _ : state) {
-    const auto r = simulate(plant, options);
-    benchmark::DoNotOptimize(r.series.size());
-    last = r.summary;
-  }
-  count_work(state, last);
+  run_rig(state, vary(base, run_seed(1, 0, 0)));
 }
 
 // The default rig at the map's largest S2 (4.4 mm^2), sliding at ~0.8 m/s: the step is bound
@@ -105,16 +97,7 @@ void BM_VirtualRigTextured(benchmark::State& state) {
 void BM_VirtualRigFastSliding(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = 4.4e-6;
-  s.run.duration_s = 10.0;
-  const Plant plant(s);
-  const auto options = s.run;
-  IntegrationSummary last;
-  for (auto _ : state) {
-    const auto r = simulate(plant, options);
-    benchmark::DoNotOptimize(r.series.size());
-    last = r.summary;
-  }
-  count_work(state, last);
+  run_rig(state, s);
 }
 
 // LuGre's quasi-static limit (docs/model.md, "Friction") off (first argument 0: the full
@@ -123,21 +106,12 @@ void BM_VirtualRigFastSliding(benchmark::State& state) {
 void BM_VirtualRigQuasiStatic(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = static_cast<double>(state.range(1)) * 1e-8;
-  s.run.duration_s = 10.0;
   if (state.range(0) == 0) {
     s.friction.quasi_static_rate_per_s = 0.0;
     s.load.guide_friction.quasi_static_rate_per_s = 0.0;
   }
-  const Plant plant(s);
-  const auto options = s.run;
-  IntegrationSummary last;
-  for (auto _ : state) {
-    const auto r = simulate(plant, options);
-    benchmark::DoNotOptimize(r.series.size());
-    last = r.summary;
-  }
   state.SetLabel(state.range(0) == 0 ? "full bristle equation" : "quasi-static limit (default)");
-  count_work(state, last);
+  run_rig(state, s);
 }
 
 // The default rig integrated without output, with the default step-size controller

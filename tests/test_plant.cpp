@@ -264,7 +264,7 @@ void expect_jacobian_matches_differences(const Plant& plant, const Mode& mode,
   for (double d : dfdt) EXPECT_EQ(d, 0.0);  // the plant is autonomous
 }
 
-TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
+TEST(Plant, ExactJacobianMatchesDifferencesOnTheSimpleRig) {
   Scenario s = simple_rig_scenario();
   s.friction.coulomb_gain_N_per_Pa = 8e-6;  // pressure dependence couples friction to P1, P2
   s.friction.static_gain_N_per_Pa = 12e-6;
@@ -286,7 +286,9 @@ TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
     EXPECT_EQ(J[L.x * L.size + j], 0.0);
     EXPECT_EQ(J[L.v * L.size + j], 0.0);
   }
+}
 
+TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
   const Plant rig(default_scenario());  // LuGre on both contacts, spring-coupled load
   std::vector<double> y = rig.initial_state();
   const StateLayout& R = rig.layout();
@@ -305,7 +307,9 @@ TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
   Mode quasi;
   quasi.value[0] = quasi.value[1] = static_cast<std::int8_t>(ContactMode::kQuasiPos);
   expect_jacobian_matches_differences(rig, quasi, y);
+}
 
+TEST(Plant, ExactJacobianMatchesDifferencesWithAGmsSeal) {
   // Generalized Maxwell-slip seal: elements below, on the way to and past their slip
   // deflections (about 0.1, 0.2, 0.3, 0.4 mm at this speed), away from the weight's kinks.
   Scenario g = default_scenario();
@@ -324,7 +328,9 @@ TEST(Plant, ExactJacobianMatchesDifferencesInEveryMode) {
   u[G.load_v] = 0.05;
   u[G.guide_z] = 5e-5;
   expect_jacobian_matches_differences(gms, gms.sliding_mode(+1), u);
+}
 
+TEST(Plant, ExactJacobianMatchesDifferencesWithTheSupplyLine) {
   // The supply line's P0 couples into P1 through S1 (forward and back-flow) and is fed by
   // the regulator; with the energy equation the back-flow carries T1; S1's opening fraction
   // scales its flow.

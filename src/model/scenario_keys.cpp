@@ -156,8 +156,8 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
 }
 
-std::vector<KeySpec> build_keys() {
-  std::vector<KeySpec> k;
+// Keys of the circuit: valve openings, supply and ambient pressure.
+void add_circuit_keys(std::vector<KeySpec>& k) {
   k.push_back(word<CircuitKind>(
       "circuit.kind",
       "meter-out: S2 is the exhaust speed controller (the paper's rig); "
@@ -185,6 +185,10 @@ std::vector<KeySpec> build_keys() {
   k.push_back(number(
       "ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3, kPositive,
       [](auto& s) -> auto& { return s.ambient_pressure_Pa; }));
+}
+
+// Keys of the air: gas properties, chamber thermodynamics and the supply line.
+void add_gas_keys(std::vector<KeySpec>& k) {
   k.push_back(number(
       "gas.temperature_K", "K", "temperature of supply air and chambers", 1.0, kPositive,
       [](auto& s) -> auto& { return s.temperature_K; }));
@@ -221,6 +225,10 @@ std::vector<KeySpec> build_keys() {
       "supply_line.polytropic_exponent", "-",
       "n of the line's pressure equation: 1.0 isothermal, 1.4 adiabatic (volume_cm3 > 0)", 1.0,
       Range{1.0, 1.67}, [](auto& s) -> auto& { return s.supply_line.polytropic_exponent; }));
+}
+
+// Keys of the cylinder and its valves.
+void add_cylinder_keys(std::vector<KeySpec>& k) {
   k.push_back(number(
       "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.cylinder.bore_m; }));
@@ -259,6 +267,10 @@ std::vector<KeySpec> build_keys() {
   k.push_back(number(
       "valve.S1_opening_time_ms", "ms", "time constant of S1's opening (S1_opening = lag)", 1e-3,
       kPositive, [](auto& s) -> auto& { return s.valve_opening.time_constant_s; }));
+}
+
+// Keys of the seal, the load and its guide.
+void add_moving_part_keys(std::vector<KeySpec>& k) {
   add_friction_keys(
       k, "friction.", "piston seal", [](auto& s) -> auto& { return s.friction; });
   k.push_back(number(
@@ -284,6 +296,10 @@ std::vector<KeySpec> build_keys() {
   add_friction_keys(
       k, "guide_friction.", "load guide (spring coupling)",
       [](auto& s) -> auto& { return s.load.guide_friction; });
+}
+
+// Keys of run-to-run variation and the integration.
+void add_run_keys(std::vector<KeySpec>& k) {
   k.push_back(number(
       "variation.friction_rel_sd", "-",
       "relative sd of each friction parameter, drawn per run (sweeps)", 1.0, Range{0.0, 0.5},
@@ -319,6 +335,16 @@ std::vector<KeySpec> build_keys() {
       "dopri5 (explicit, default) or rosenbrock4 (stiff, for stiff "
       "LuGre bristles)",
       {"dopri5", "rosenbrock4"}, [](auto& s) -> auto& { return s.run.stepper; }));
+}
+
+// Every key, in the order `pneumachaos scenario` lists them.
+std::vector<KeySpec> build_keys() {
+  std::vector<KeySpec> k;
+  add_circuit_keys(k);
+  add_gas_keys(k);
+  add_cylinder_keys(k);
+  add_moving_part_keys(k);
+  add_run_keys(k);
   return k;
 }
 
