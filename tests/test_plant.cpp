@@ -182,14 +182,22 @@ double largest_velocity_difference(const SimulationResult& a, const SimulationRe
   return worst;
 }
 
+// The default rig at S2 for `seconds`: the full bristle equation at tight tolerances (the
+// reference) and at the default ones, and the default (quasi-static limit on).
+struct QuasiStaticRuns {
+  SimulationResult full, full_default, limit;
+};
+QuasiStaticRuns quasi_static_runs(double S2_mm2, double seconds) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = S2_mm2 * 1e-6;
+  s.run.duration_s = seconds;
+  return {simulate(Plant(without_quasi_static(s)), tight(seconds)),
+          simulate(Plant(without_quasi_static(s)), s.run), simulate(Plant(s), s.run)};
+}
+
 TEST(Plant, LuGreQuasiStaticLimitMatchesTheBristleEquationWhileSlidingFast) {
   for (const double S2_mm2 : {2.0, 4.4}) {  // the map's sliding points: ~0.5-0.8 m/s
-    Scenario s = default_scenario();
-    s.circuit.S2_m2 = S2_mm2 * 1e-6;
-    s.run.duration_s = 2.0;
-    const auto full = simulate(Plant(without_quasi_static(s)), tight(2.0));
-    const auto full_default = simulate(Plant(without_quasi_static(s)), s.run);
-    const auto limit = simulate(Plant(s), s.run);
+    const auto [full, full_default, limit] = quasi_static_runs(S2_mm2, 2.0);
     ASSERT_TRUE(full.summary.ok() && full_default.summary.ok() && limit.summary.ok());
     EXPECT_LT(largest_velocity_difference(limit, full), 1e-7 * 0.8) << "S2 " << S2_mm2;
     // The limit was used: the bristles no longer bound the step.
@@ -202,12 +210,7 @@ TEST(Plant, LuGreQuasiStaticLimitKeepsTheChaoticAndStickSlipRuns) {
   // Chaos amplifies any difference (~e^4 in 1 s), so the limit is asked to stay within twice
   // the default tolerances' own error against the reference over 1 s.
   for (const double S2_mm2 : {0.35, 0.05}) {  // the default (chaotic) point and stick-slip
-    Scenario s = default_scenario();
-    s.circuit.S2_m2 = S2_mm2 * 1e-6;
-    s.run.duration_s = 1.0;
-    const auto full = simulate(Plant(without_quasi_static(s)), tight(1.0));
-    const auto full_default = simulate(Plant(without_quasi_static(s)), s.run);
-    const auto limit = simulate(Plant(s), s.run);
+    const auto [full, full_default, limit] = quasi_static_runs(S2_mm2, 1.0);
     ASSERT_TRUE(full.summary.ok() && full_default.summary.ok() && limit.summary.ok());
     EXPECT_LE(largest_velocity_difference(limit, full),
               2.0 * largest_velocity_difference(full_default, full))
