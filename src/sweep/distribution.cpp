@@ -1,11 +1,17 @@
 #include "distribution.hpp"
 
-#include <cstdlib>
-#include <initializer_list>
+#include <dlfcn.h>
+#include <fmt/format.h>
 
-#ifdef PNEUMACHAOS_HAVE_MPI
-#include <mpi.h>
-#endif
+#include <cstdlib>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "mpi_transport.hpp"
+#include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos::detail {
 namespace {
@@ -18,6 +24,35 @@ bool launched_by_mpi() {
   return false;
 }
 
+#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
+// Where the module is looked for: beside the program (the build tree), then in the library
+// directory relative to it (an installed tree: bin/ and lib/pneumachaos/).
+std::vector<std::filesystem::path> module_candidates() {
+  std::error_code ec;
+  const auto exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+  return {exe_dir / kMpiModuleFile, exe_dir / PNEUMACHAOS_MPI_MODULE_RELDIR / kMpiModuleFile};
+}
+
+// RTLD_GLOBAL: Open MPI's own plugins, which it opens in turn, resolve MPI symbols globally.
+const PneumachaosMpiTransport& load_transport() {
+  std::string tried;
+  for (const auto& path : module_candidates()) {
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (handle == nullptr) {
+      tried += fmt::format("\n  {}", dlerror());  // names the path
+      continue;
+    }
+    using Get = const PneumachaosMpiTransport* (*)();
+    auto get = reinterpret_cast<Get>(dlsym(handle, kMpiTransportSymbol));
+    const PneumachaosMpiTransport* t = get != nullptr ? get() : nullptr;
+    if (t != nullptr && t->version == kMpiTransportVersion) return *t;
+    tried += fmt::format("\n  {}: not a pneumachaos MPI module of this version", path.string());
+  }
+  throw RunError("MPI module", "started by an MPI launcher, but the module that distributes "
+                               "the sweep cannot be opened:" + tried);
+}
+#endif
+
 }  // namespace
 
 Distribution& Distribution::instance() {
@@ -26,46 +61,28 @@ Distribution& Distribution::instance() {
 }
 
 Distribution::Distribution() {
-#ifdef PNEUMACHAOS_HAVE_MPI
+#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
   if (!launched_by_mpi()) return;
-  int already = 0;
-  MPI_Initialized(&already);
-  if (already == 0) {
-    MPI_Init(nullptr, nullptr);
-    initialized_here_ = true;
-  }
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  mpi_ = &load_transport();
+  initialized_here_ = mpi_->init(&rank_, &size_) != 0;
 #endif
 }
 
 Distribution::~Distribution() {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  int finalized = 0;
-  MPI_Finalized(&finalized);
-  if (initialized_here_ && finalized == 0) MPI_Finalize();
-#endif
+  if (mpi_ != nullptr && initialized_here_) mpi_->finalize();
 }
 
 void Distribution::barrier() const {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
-#endif
+  if (size_ > 1) mpi_->barrier();
 }
 
 bool Distribution::all_ok(bool ok) const {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  if (size_ > 1) {
-    int mine = ok ? 1 : 0, all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
-    return all != 0;
-  }
-#endif
+  if (size_ > 1) return mpi_->all_ok(ok ? 1 : 0) != 0;
   return ok;
 }
 
 bool Distribution::built_with_mpi() {
-#ifdef PNEUMACHAOS_HAVE_MPI
+#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
   return true;
 #else
   return false;
