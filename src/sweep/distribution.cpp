@@ -1,17 +1,11 @@
 #include "distribution.hpp"
 
-#include <dlfcn.h>
-#include <fmt/format.h>
-
 #include <cstdlib>
-#include <filesystem>
 #include <initializer_list>
-#include <string>
-#include <system_error>
-#include <vector>
 
 #include "mpi_transport.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/module_loader.hpp"
 
 namespace pneumachaos::detail {
 namespace {
@@ -24,32 +18,15 @@ bool launched_by_mpi() {
   return false;
 }
 
-#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
-// Where the module is looked for: beside the program (the build tree), then in the library
-// directory relative to it (an installed tree: bin/ and lib/pneumachaos/).
-std::vector<std::filesystem::path> module_candidates() {
-  std::error_code ec;
-  const auto exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
-  return {exe_dir / kMpiModuleFile, exe_dir / PNEUMACHAOS_MPI_MODULE_RELDIR / kMpiModuleFile};
-}
-
-// RTLD_GLOBAL: Open MPI's own plugins, which it opens in turn, resolve MPI symbols globally.
+#ifdef PNEUMACHAOS_HAVE_MPI
 const PneumachaosMpiTransport& load_transport() {
-  std::string tried;
-  for (const auto& path : module_candidates()) {
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
-    if (handle == nullptr) {
-      tried += fmt::format("\n  {}", dlerror());  // names the path
-      continue;
-    }
-    using Get = const PneumachaosMpiTransport* (*)();
-    auto get = reinterpret_cast<Get>(dlsym(handle, kMpiTransportSymbol));
-    const PneumachaosMpiTransport* t = get != nullptr ? get() : nullptr;
-    if (t != nullptr && t->version == kMpiTransportVersion) return *t;
-    tried += fmt::format("\n  {}: not a pneumachaos MPI module of this version", path.string());
+  using Get = const PneumachaosMpiTransport* (*)();
+  const auto get = reinterpret_cast<Get>(module_symbol(kMpiModuleFile, kMpiTransportSymbol));
+  const PneumachaosMpiTransport* t = get();
+  if (t == nullptr || t->version != kMpiTransportVersion) {
+    throw RunError(kMpiModuleFile, "an MPI module of another version of pneumachaos");
   }
-  throw RunError("MPI module", "started by an MPI launcher, but the module that distributes "
-                               "the sweep cannot be opened:" + tried);
+  return *t;
 }
 #endif
 
@@ -61,7 +38,7 @@ Distribution& Distribution::instance() {
 }
 
 Distribution::Distribution() {
-#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
+#ifdef PNEUMACHAOS_HAVE_MPI
   if (!launched_by_mpi()) return;
   mpi_ = &load_transport();
   initialized_here_ = mpi_->init(&rank_, &size_) != 0;
@@ -82,7 +59,7 @@ bool Distribution::all_ok(bool ok) const {
 }
 
 bool Distribution::built_with_mpi() {
-#ifdef PNEUMACHAOS_MPI_MODULE_RELDIR
+#ifdef PNEUMACHAOS_HAVE_MPI
   return true;
 #else
   return false;
