@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The command-line program runs six commands itself and opens libpneumachaos_cli.so for the
 # others (docs/architecture.md "Modules opened at run time"): a copy of the program without
-# its modules still analyses, and for a command held by the module stops with exit 3 naming
+# its modules still runs its own commands, and for one held by the module stops with exit 3 naming
 # the paths it tried.
 set -euo pipefail
 cli=$1
