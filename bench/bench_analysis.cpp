@@ -5,10 +5,13 @@
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <map>
+#include <random>
 
 #include "../tests/reference_series.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/analysis/log_array.hpp"
 
 namespace {
 
@@ -74,10 +77,40 @@ void BM_WolfWhiteNoise(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
 }
 
+// The divergence curve's logarithms: one step's 729 squared distances (a 1e4 record's
+// horizon), the C library's log one by one (what the curve called before) against log_array.
+std::vector<double> squared_distances() {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> exponent(-12.0, 4.0);
+  std::vector<double> d2(729);
+  for (double& v : d2) v = std::exp(exponent(rng));
+  return d2;
+}
+
+void BM_LogLibrary(benchmark::State& state) {
+  const std::vector<double> d2 = squared_distances();
+  std::vector<double> out(d2.size());
+  for (auto _ : state) {
+    for (std::size_t k = 0; k < d2.size(); ++k) out[k] = std::log(d2[k]);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+
+void BM_LogArray(benchmark::State& state) {
+  const std::vector<double> d2 = squared_distances();
+  std::vector<double> out(d2.size());
+  for (auto _ : state) {
+    log_array(d2, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+
 BENCHMARK(BM_AnalyzeAll)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeWithSurrogates)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wolf)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LogLibrary);
+BENCHMARK(BM_LogArray);
 BENCHMARK(BM_WolfWhiteNoise)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

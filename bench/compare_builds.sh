@@ -40,7 +40,7 @@ workload() {
   n2=$(cpu_and_rss "$new" "$repeats" "$@")
   printf "%-34s " "$name"
   echo "$o1 $n1 $o2 $n2" | awk '{o = ($1 + $5) / 2; n = ($3 + $7) / 2;
-    printf "old %8.3f s %7.1f MB   new %8.3f s %7.1f MB   old/new %5.2f\n", o, $2, n, $4, o / n}'
+    printf "old %9.4f s %7.1f MB   new %9.4f s %7.1f MB   old/new %5.2f\n", o, $2, n, $4, o / n}'
 }
 
 printf "%-34s %s\n" "workload" "CPU seconds per run (mean of 2 alternating rounds), peak RSS"

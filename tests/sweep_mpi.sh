@@ -4,9 +4,20 @@
 set -euo pipefail
 cli=$1
 if ! "$cli" --version | grep -q "(MPI)"; then echo "skipped: built without MPI"; exit 77; fi
-if ! command -v mpirun >/dev/null; then echo "skipped: no mpirun"; exit 77; fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# MPI is a module opened only under a launcher: a program without it beside it must stop with
+# exit 3 and name where it looked (a launcher's variable set by hand stands in for mpirun).
+cp "$cli" "$work/alone"
+set +e
+OMPI_COMM_WORLD_SIZE=1 "$work/alone" sweep --grid circuit.S2_mm2=0.05:0.35:0.15 --out "$work/x" \
+  >/dev/null 2>"$work/alone.log"
+code=$?
+set -e
+if [[ $code != 3 ]] || ! grep -q "$work/libpneumachaos_mpi.so" "$work/alone.log"; then
+  echo "missing MPI module: exit $code"; cat "$work/alone.log"; exit 1
+fi
+if ! command -v mpirun >/dev/null; then echo "skipped: no mpirun"; exit 77; fi
 args=(sweep --grid circuit.S1_mm2=2.6:2.8:0.1 --grid circuit.S2_mm2=0.05:0.65:0.15 --repeats 2
       --set run.duration_s=3 --set variation.friction_rel_sd=0.05)
 "$cli" "${args[@]}" --out "$work/local" >/dev/null

@@ -1,85 +1,40 @@
 // pneumachaos: command-line entry point.
+//
+// The commands that need neither Ceres (friction, fit) nor the report (reproduce) run in this
+// program. Every other command line, the overall --help and --version included, goes to the
+// module libpneumachaos_cli.so, which holds every command: loading Ceres with SuiteSparse,
+// BLAS and LAPACK cost each start 1.4 ms of CPU, 5 % of an `analyze` of 1e4 samples
+// (docs/performance.md "Analysis (third round)", docs/architecture.md).
 
 #include <fmt/format.h>
 
-#include <cerrno>
+#include <array>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <iostream>
-#include <system_error>
-#include <map>
 
-#include "commands.hpp"
-#include "flag_names.hpp"
+#include "cli_main.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/sweep/sweep_runner.hpp"
+#include "pneumachaos/core/module_loader.hpp"
 
 namespace {
 
-int run(int argc, char** argv) {
-  CLI::App app{"pneumachaos: stick-slip and chaotic oscillation of pneumatic cylinders"};
-  app.set_version_flag("--version", std::string("pneumachaos ") + PNEUMACHAOS_VERSION +
-                                        (pneumachaos::sweeps_support_mpi() ? " (MPI)" : ""));
-  app.require_subcommand(1);
-  std::map<CLI::App*, pneumachaos::cli::Action> actions;
-  const auto add = [&](pneumachaos::cli::Action (*f)(CLI::App&)) {
-    auto action = f(app);
-    actions[app.get_subcommands({}).back()] = std::move(action);
-  };
-  add(pneumachaos::cli::add_simulate);
-  add(pneumachaos::cli::add_scenario);
-  add(pneumachaos::cli::add_stability);
-  add(pneumachaos::cli::add_analyze);
-  add(pneumachaos::cli::add_sweep);
-  add(pneumachaos::cli::add_lyapunov);
-  add(pneumachaos::cli::add_reproduce);
-  add(pneumachaos::cli::add_friction);
-  add(pneumachaos::cli::add_fit);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // --help and --version print and succeed; every other parse error is a usage error (2),
-    // not CLI11's own codes, so scripts can rely on the README's exit codes.
-    const int code = app.exit(e);
-    return code == 0 ? pneumachaos::cli::kExitOk : pneumachaos::cli::kExitBadInput;
-  }
-  for (auto* sub : app.get_subcommands()) return actions.at(sub)();
-  return pneumachaos::cli::kExitOk;
-}
+using namespace pneumachaos::cli;
 
-// Output to a full disk or a closed descriptor must not end as success: stdout is flushed and
-// checked before the exit code is decided.
-int checked_stdout(int code) {
-  std::cout.flush();
-  const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
-  if (!failed) return code;
-  fmt::print(stderr, "pneumachaos: error: cannot write to standard output: {}\n",
-             std::strerror(errno != 0 ? errno : EIO));
-  return code == pneumachaos::cli::kExitOk ? pneumachaos::cli::kExitRunFailed : code;
+constexpr std::array<AddCommand, 6> kCommandsHere{add_simulate, add_scenario, add_stability,
+                                                  add_analyze,  add_sweep,    add_lyapunov};
+
+int in_module(int argc, char** argv) {
+  using Main = int (*)(int, char**);
+  Main full = nullptr;
+  try {
+    full = reinterpret_cast<Main>(pneumachaos::module_symbol("libpneumachaos_cli.so",
+                                                             "pneumachaos_cli_main"));
+  } catch (const pneumachaos::Error& e) {
+    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
+    return kExitRunFailed;
+  }
+  return full(argc, argv);
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  // Every failure ends here with a message and an exit code, never as an uncaught exception.
-  try {
-    return checked_stdout(run(argc, argv));
-  } catch (const std::filesystem::filesystem_error& e) {
-    fmt::print(stderr, "pneumachaos: error: {}\n", e.what());
-    return pneumachaos::cli::kExitRunFailed;
-  } catch (const std::system_error& e) {
-    // fmt reports a failed write to standard output this way.
-    fmt::print(stderr, "pneumachaos: error: cannot write output: {}\n", e.what());
-    return pneumachaos::cli::kExitRunFailed;
-  } catch (const pneumachaos::Error& e) {
-    using namespace pneumachaos::cli;
-    fmt::print(stderr, "pneumachaos: error: {}\n", message_as_typed(e, common_flag_names()));
-    return dynamic_cast<const pneumachaos::RunError*>(&e) ? kExitRunFailed : kExitBadInput;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "pneumachaos: internal error: {}\n", e.what());
-    return 70;  // EX_SOFTWARE
-  } catch (...) {
-    return 70;
-  }
-}
+int main(int argc, char** argv) { return cli_main(argc, argv, kCommandsHere, in_module); }

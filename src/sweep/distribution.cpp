@@ -3,9 +3,9 @@
 #include <cstdlib>
 #include <initializer_list>
 
-#ifdef PNEUMACHAOS_HAVE_MPI
-#include <mpi.h>
-#endif
+#include "mpi_transport.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/module_loader.hpp"
 
 namespace pneumachaos::detail {
 namespace {
@@ -18,6 +18,18 @@ bool launched_by_mpi() {
   return false;
 }
 
+#ifdef PNEUMACHAOS_HAVE_MPI
+const PneumachaosMpiTransport& load_transport() {
+  using Get = const PneumachaosMpiTransport* (*)();
+  const auto get = reinterpret_cast<Get>(module_symbol(kMpiModuleFile, kMpiTransportSymbol));
+  const PneumachaosMpiTransport* t = get();
+  if (t == nullptr || t->version != kMpiTransportVersion) {
+    throw RunError(kMpiModuleFile, "an MPI module of another version of pneumachaos");
+  }
+  return *t;
+}
+#endif
+
 }  // namespace
 
 Distribution& Distribution::instance() {
@@ -28,39 +40,21 @@ Distribution& Distribution::instance() {
 Distribution::Distribution() {
 #ifdef PNEUMACHAOS_HAVE_MPI
   if (!launched_by_mpi()) return;
-  int already = 0;
-  MPI_Initialized(&already);
-  if (already == 0) {
-    MPI_Init(nullptr, nullptr);
-    initialized_here_ = true;
-  }
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  mpi_ = &load_transport();
+  initialized_here_ = mpi_->init(&rank_, &size_) != 0;
 #endif
 }
 
 Distribution::~Distribution() {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  int finalized = 0;
-  MPI_Finalized(&finalized);
-  if (initialized_here_ && finalized == 0) MPI_Finalize();
-#endif
+  if (mpi_ != nullptr && initialized_here_) mpi_->finalize();
 }
 
 void Distribution::barrier() const {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
-#endif
+  if (size_ > 1) mpi_->barrier();
 }
 
 bool Distribution::all_ok(bool ok) const {
-#ifdef PNEUMACHAOS_HAVE_MPI
-  if (size_ > 1) {
-    int mine = ok ? 1 : 0, all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
-    return all != 0;
-  }
-#endif
+  if (size_ > 1) return mpi_->all_ok(ok ? 1 : 0) != 0;
   return ok;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // Which share of a sweep this process computes: all of it, or under `mpirun -np N` the runs
 // whose index is congruent to its rank. MPI is used only when the build has it AND the
-// process was started by an MPI launcher, so the same binary works on its own.
+// process was started by an MPI launcher, so the same binary works on its own; only then is
+// the MPI module (libpneumachaos_mpi.so, mpi_transport.hpp) opened.
+
+struct PneumachaosMpiTransport;
 
 namespace pneumachaos::detail {
 
@@ -15,12 +18,13 @@ class Distribution {
   /// Waits for every rank and tells whether all of them passed `ok` = true: a barrier that a
   /// failed rank still reaches, so no rank waits forever for one that threw.
   [[nodiscard]] bool all_ok(bool ok) const;
-  /// Whether this binary was built with MPI support.
+  /// Whether this build has the MPI module.
   static bool built_with_mpi();
 
  private:
   Distribution();
   ~Distribution();
+  const PneumachaosMpiTransport* mpi_ = nullptr;  ///< set only under an MPI launcher
   int rank_ = 0;
   int size_ = 1;
   bool initialized_here_ = false;
