@@ -137,7 +137,10 @@ Scenario default_scenario() {
   // damped second degree of freedom near the pneumatic frequency that chaos needs.
   s.load.coupling = LoadCoupling::kSpring;
   s.load.mass_kg = 1.5;
-  s.load.piston_mass_kg = 0.53;  // steel piston and 16 mm rod of a 40 mm, 500 mm cylinder
+  // Piston + rod of a 40/16 mm cylinder weigh about 0.26 kg + 1.58 kg/m x stroke, so 0.53 kg
+  // is the moving mass of a ~170 mm stroke, not of this 500 mm one (1.05-1.3 kg). It stays:
+  // with the consistent mass this rig is not chaotic (docs/virtual_rig.md, search 22).
+  s.load.piston_mass_kg = 0.53;
   s.load.coupling_stiffness_N_per_m = 7.9e3;
   s.load.coupling_damping_Ns_per_m = 7.0;
   s.load.guide_friction = {
