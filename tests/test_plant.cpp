@@ -7,6 +7,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "variant_scenarios.hpp"
 #include "stuck_samples.hpp"
 #include "tight_options.hpp"
 
@@ -182,13 +183,14 @@ double largest_velocity_difference(const SimulationResult& a, const SimulationRe
   return worst;
 }
 
-// The default rig at S2 for `seconds`: the full bristle equation at tight tolerances (the
-// reference) and at the default ones, and the default (quasi-static limit on).
+// The LuGre rig (the default before issue 12) at S2 for `seconds`: the full bristle equation
+// at tight tolerances (the reference) and at the default ones, and the rig as it is
+// (quasi-static limit on).
 struct QuasiStaticRuns {
   SimulationResult full, full_default, limit;
 };
 QuasiStaticRuns quasi_static_runs(double S2_mm2, double seconds) {
-  Scenario s = default_scenario();
+  Scenario s = frozen_light_piston();
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
   s.run.duration_s = seconds;
   return {simulate(Plant(without_quasi_static(s)), tight(seconds)),
