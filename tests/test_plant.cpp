@@ -294,7 +294,7 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheSimpleRig) {
 }
 
 TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
-  const Plant rig(default_scenario());  // LuGre on both contacts, spring-coupled load
+  const Plant rig(frozen_light_piston());  // LuGre on both contacts, spring-coupled load
   std::vector<double> y = rig.initial_state();
   const StateLayout& R = rig.layout();
   y[R.x] = 0.42;
@@ -317,7 +317,8 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
 TEST(Plant, ExactJacobianMatchesDifferencesWithAGmsSeal) {
   // Generalized Maxwell-slip seal: elements below, on the way to and past their slip
   // deflections (about 0.1, 0.2, 0.3, 0.4 mm at this speed), away from the weight's kinks.
-  Scenario g = default_scenario();
+  // The two-mass LuGre rig with the GMS model's own defaults (1e5 N/m in all).
+  Scenario g = frozen_light_piston();
   g.friction.kind = FrictionKind::kGms;
   const Plant gms(g);
   std::vector<double> u = gms.initial_state();
