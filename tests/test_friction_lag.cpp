@@ -129,7 +129,8 @@ TEST(FrictionLag, LagTimeMustBePositiveNamingTheKey) {
 }
 
 TEST(FrictionLag, OnlyTheStribeckModelTakesTheLag) {
-  Scenario s = default_scenario();  // lugre seal
+  Scenario s = default_scenario();
+  s.friction.kind = FrictionKind::kLuGre;
   s.friction.memory = FrictionMemory::kLag;
   try {
     s.validate();

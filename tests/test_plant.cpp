@@ -7,6 +7,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "variant_scenarios.hpp"
 #include "stuck_samples.hpp"
 #include "tight_options.hpp"
 
@@ -182,13 +183,14 @@ double largest_velocity_difference(const SimulationResult& a, const SimulationRe
   return worst;
 }
 
-// The default rig at S2 for `seconds`: the full bristle equation at tight tolerances (the
-// reference) and at the default ones, and the default (quasi-static limit on).
+// The LuGre rig (the default before issue 12) at S2 for `seconds`: the full bristle equation
+// at tight tolerances (the reference) and at the default ones, and the rig as it is
+// (quasi-static limit on).
 struct QuasiStaticRuns {
   SimulationResult full, full_default, limit;
 };
 QuasiStaticRuns quasi_static_runs(double S2_mm2, double seconds) {
-  Scenario s = default_scenario();
+  Scenario s = frozen_light_piston();
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
   s.run.duration_s = seconds;
   return {simulate(Plant(without_quasi_static(s)), tight(seconds)),
@@ -292,7 +294,7 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheSimpleRig) {
 }
 
 TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
-  const Plant rig(default_scenario());  // LuGre on both contacts, spring-coupled load
+  const Plant rig(frozen_light_piston());  // LuGre on both contacts, spring-coupled load
   std::vector<double> y = rig.initial_state();
   const StateLayout& R = rig.layout();
   y[R.x] = 0.42;
@@ -315,7 +317,8 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
 TEST(Plant, ExactJacobianMatchesDifferencesWithAGmsSeal) {
   // Generalized Maxwell-slip seal: elements below, on the way to and past their slip
   // deflections (about 0.1, 0.2, 0.3, 0.4 mm at this speed), away from the weight's kinks.
-  Scenario g = default_scenario();
+  // The two-mass LuGre rig with the GMS model's own defaults (1e5 N/m in all).
+  Scenario g = frozen_light_piston();
   g.friction.kind = FrictionKind::kGms;
   const Plant gms(g);
   std::vector<double> u = gms.initial_state();

@@ -31,8 +31,12 @@ Claim exponent(const ClaimInputs& in) {
   c.ours = fmt::format(
       "record: {:.2f} +- {:.2f} 1/s, regime {}{}", *in.example_lambda, *in.example_uncertainty,
       *in.example_chaotic ? "chaotic" : "not chaotic",
-      in.example_model_lambda ? fmt::format("; model: {:.2f} 1/s", *in.example_model_lambda)
-                              : std::string());
+      in.example_model_lambda
+          ? fmt::format("; model: {:.2f}{} 1/s", *in.example_model_lambda,
+                        in.example_model_uncertainty
+                            ? fmt::format(" +- {:.2f}", *in.example_model_uncertainty)
+                            : std::string())
+          : std::string());
   c.verdict = verdict(positive_exponent_of_chaos(*in.example_lambda, *in.example_uncertainty,
                                                  *in.example_chaotic));
   return c;

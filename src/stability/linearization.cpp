@@ -1,21 +1,28 @@
 #include "pneumachaos/stability/linearization.hpp"
 
+#include <fmt/format.h>
+
+#include <string>
+
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {
 
-// Positions of the reduced states; kNone where the plant has no such state.
+// Positions of the reduced states; kNone where the plant has no such state. The seal's
+// internal states (one for LuGre, one per element for GMS) follow P2 as a block of z_count.
 struct ReducedLayout {
   static constexpr int kNone = -1;
   int v = 0, P1 = 1, P2 = 2, z = kNone, deflection = kNone, v_load = kNone, z_guide = kNone;
+  int z_count = 0;
   int size = 3;
 };
 
 ReducedLayout reduced_layout(const Plant& plant) {
   const StateLayout& L = plant.layout();
-  if (L.seal_z_count > 1 || L.guide_z_count > 1) {
-    throw Error("friction.model", "the linearization supports at most one internal friction state");
+  if (L.guide_z_count > 1) {
+    throw Error("guide_friction.model",
+                "the linearization supports at most one internal state of the guide's friction");
   }
   if (L.has_temperatures()) {
     throw Error("thermal.chamber_model",
@@ -30,7 +37,11 @@ ReducedLayout reduced_layout(const Plant& plant) {
                 "the linearization does not include the supply line yet; use 0 (ideal supply)");
   }
   ReducedLayout r;
-  if (L.seal_z_count == 1) r.z = r.size++;
+  if (L.seal_z_count > 0) {
+    r.z = r.size;
+    r.z_count = static_cast<int>(L.seal_z_count);
+    r.size += r.z_count;
+  }
   if (L.has_load_body()) {
     r.deflection = r.size++;
     r.v_load = r.size++;
@@ -47,7 +58,7 @@ std::vector<double> full_state_impl(const Plant& plant, const Equilibrium& eq,
   x[L.v] = y[r.v];
   x[L.P1] = y[r.P1];
   x[L.P2] = y[r.P2];
-  if (r.z != ReducedLayout::kNone) x[L.seal_z] = y[r.z];
+  for (int i = 0; i < r.z_count; ++i) x[L.seal_z + i] = y[r.z + i];
   if (r.deflection != ReducedLayout::kNone) {
     x[L.load_x] = eq.position_m - y[r.deflection];
     x[L.load_v] = y[r.v_load];
@@ -76,7 +87,9 @@ ReducedState reduced_state(const Plant& plant, const Equilibrium& eq) {
   add("v", eq.state[L.v]);
   add("P1", eq.state[L.P1]);
   add("P2", eq.state[L.P2]);
-  if (r.z != ReducedLayout::kNone) add("z", eq.state[L.seal_z]);
+  // "z" for a single state (LuGre), "z1", "z2", ... for the GMS elements.
+  for (int i = 0; i < r.z_count; ++i)
+    add(r.z_count == 1 ? std::string("z") : fmt::format("z{}", i + 1), eq.state[L.seal_z + i]);
   if (r.deflection != ReducedLayout::kNone) {
     add("deflection", eq.state[L.x] - eq.state[L.load_x]);
     add("v_load", eq.state[L.load_v]);
@@ -98,7 +111,7 @@ Eigen::VectorXd reduced_derivative(const Plant& plant, const Equilibrium& eq,
   dy[r.v] = dx[L.v];
   dy[r.P1] = dx[L.P1];
   dy[r.P2] = dx[L.P2];
-  if (r.z != ReducedLayout::kNone) dy[r.z] = dx[L.seal_z];
+  for (int i = 0; i < r.z_count; ++i) dy[r.z + i] = dx[L.seal_z + i];
   if (r.deflection != ReducedLayout::kNone) {
     dy[r.deflection] = dx[L.x] - dx[L.load_x];
     dy[r.v_load] = dx[L.load_v];
@@ -127,7 +140,7 @@ Eigen::MatrixXd jacobian(const Plant& plant, const Equilibrium& eq) {
   both(r.v, L.v);
   both(r.P1, L.P1);
   both(r.P2, L.P2);
-  if (r.z != ReducedLayout::kNone) both(r.z, L.seal_z);
+  for (int i = 0; i < r.z_count; ++i) both(r.z + i, L.seal_z + static_cast<std::size_t>(i));
   if (r.deflection != ReducedLayout::kNone) {
     E(static_cast<Eigen::Index>(L.load_x), r.deflection) = -1.0;  // x_load = x - deflection
     D(r.deflection, static_cast<Eigen::Index>(L.x)) = 1.0;

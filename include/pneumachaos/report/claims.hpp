@@ -49,6 +49,7 @@ struct ClaimInputs {
   std::optional<double> example_lambda;  ///< divergence exponent of the Fig. 7 record [1/s]
   std::optional<double> example_uncertainty;
   std::optional<double> example_model_lambda;  ///< the model's own exponent there [1/s]
+  std::optional<double> example_model_uncertainty;  ///< its standard error [1/s]
   std::optional<bool> example_chaotic;         ///< the regime verdict of the settled record
   std::optional<double> example_peak_share;    ///< spectral peak (+-1 bin) / total power
   std::optional<double> example_acf_after_1s;  ///< largest |ACF| at lags >= 1 s

@@ -1,0 +1,23 @@
+#pragma once
+// Scenarios of docs/variants/*.toml, for tests about a mechanism of one particular rig rather
+// than about whatever the default is (docs/virtual_rig.md describes each file).
+#include <string>
+#include <vector>
+
+#include "pneumachaos/model/scenario_toml.hpp"
+
+namespace pneumachaos {
+
+/// docs/variants/NAME with the overrides `sets` applied (validated).
+inline Scenario variant_scenario(const std::string& name,
+                                 const std::vector<std::string>& sets = {}) {
+  return build_scenario(std::string(PNEUMACHAOS_VARIANTS_DIR) + "/" + name, sets);
+}
+
+/// The default before issue 12: volumes frozen at 420 mm, 0.53 kg piston + rod, LuGre seal,
+/// chaotic at the Fig. 7 point (docs/variants/frozen_light_piston.toml).
+inline Scenario frozen_light_piston(const std::vector<std::string>& sets = {}) {
+  return variant_scenario("frozen_light_piston.toml", sets);
+}
+
+}  // namespace pneumachaos
