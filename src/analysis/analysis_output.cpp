@@ -67,6 +67,7 @@ nlohmann::json repetition_json(const AnalysisResult& r) {
           {"reason", s.reason},
           {"lag", value(s.lag_s, "s")},
           {"lag_samples", s.lag},
+          {"lag_drift", value(s.lag_drift_s, "s")},
           {"mismatch", value(s.mismatch, "-")},
           {"stretch", value(s.stretch_s, "s")},
           {"share", value(s.share, "-")},

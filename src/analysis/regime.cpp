@@ -56,10 +56,10 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
     return;
   }
   const std::string found = fmt::format(
-      "record repeats itself: at lag {:.4g} s the one-period windows' mismatch stays <= {} of "
-      "the attractor's size over {:.3g} s = {:.0f} % of the record (need {:.0f} %; largest "
-      "{:.3g}; whole overlap {:.3g})",
-      s.lag_s, o.repetition.max_mismatch, s.stretch_s, 100.0 * s.share,
+      "record repeats itself: at lag {:.4g} s (drifting {:+.3g} s) the one-period windows' "
+      "mismatch stays <= {} of the attractor's size over {:.3g} s = {:.0f} % of the record "
+      "(need {:.0f} %; largest {:.3g}; at the fixed lag over the whole overlap {:.3g})",
+      s.lag_s, s.lag_drift_s, o.repetition.max_mismatch, s.stretch_s, 100.0 * s.share,
       100.0 * o.repetition.min_share, s.stretch_max_mismatch, s.mismatch);
   if (!c.positive) {
     note(s.repeats, found);

@@ -56,6 +56,7 @@ std::vector<std::size_t> candidate_lags(const std::vector<double>& e, std::size_
 struct Stretch {
   std::size_t first = 0, windows = 0;  ///< in windows of w samples along the overlap
   double max_mismatch = 0.0, growth_per_step = 0.0;
+  std::size_t lag_first = 0, lag_last = 0;  ///< the followed lag at the stretch's two ends
 };
 
 // Least-squares slope of ln(m) against the window index, over m[first .. first + count).
@@ -74,28 +75,63 @@ double log_slope(const std::vector<double>& m, std::size_t first, std::size_t co
   return (c * stl - st * sl) / (c * stt - st * st);
 }
 
-// The longest run of windows (w samples each) in which x[t + L] - x[t] stays small.
-Stretch longest_stretch(std::span<const double> x, std::size_t L, std::size_t w, double two_var,
-                        double limit) {
-  const std::size_t windows = (x.size() - L) / w;
-  std::vector<double> m(windows);
-  for (std::size_t k = 0; k < windows; ++k) {
-    double sum = 0.0;
-    for (std::size_t t = k * w; t < (k + 1) * w; ++t) sum += (x[t + L] - x[t]) * (x[t + L] - x[t]);
-    m[k] = std::sqrt(sum / static_cast<double>(w) / two_var);
+// RMS of x[t + L] - x[t] over the window [t0, t0 + w), relative to the attractor's size.
+double window_mismatch(std::span<const double> x, std::size_t t0, std::size_t w, std::size_t L,
+                       double two_var) {
+  double sum = 0.0;
+  for (std::size_t t = t0; t < t0 + w; ++t) sum += (x[t + L] - x[t]) * (x[t + L] - x[t]);
+  return std::sqrt(sum / static_cast<double>(w) / two_var);
+}
+
+// The lag that best matches the window, found by stepping from `from` while the mismatch
+// falls, at most `shift` samples away and with the shifted window inside the record.
+std::size_t follow_lag(std::span<const double> x, std::size_t t0, std::size_t w,
+                       std::size_t from, std::size_t shift, double two_var, double& m) {
+  std::size_t L = from;
+  m = window_mismatch(x, t0, w, L, two_var);
+  for (int step : {+1, -1}) {
+    for (;;) {
+      const std::size_t next = L + static_cast<std::size_t>(step);  // wraps below 0: rejected
+      if (next < 1 || next > from + shift || next + shift < from || t0 + w + next > x.size()) {
+        break;
+      }
+      const double mn = window_mismatch(x, t0, w, next, two_var);
+      if (!(mn < m)) break;
+      L = next;
+      m = mn;
+    }
+  }
+  return L;
+}
+
+// The longest run of windows (w samples each) in which x[t + L] - x[t] stays small, the lag
+// following a slow drift of the phase (at most `shift` samples from one window to the next;
+// it starts again at L0 after a window that does not match).
+Stretch longest_stretch(std::span<const double> x, std::size_t L0, std::size_t w,
+                        std::size_t shift, double two_var, double limit) {
+  std::vector<double> m;
+  std::vector<std::size_t> lags;
+  std::size_t L = L0;
+  for (std::size_t t0 = 0; t0 + w + L + shift <= x.size(); t0 += w) {
+    double mk = 0.0;
+    L = follow_lag(x, t0, w, L, shift, two_var, mk);
+    m.push_back(mk);
+    lags.push_back(L);
+    if (mk > limit) L = L0;
   }
   Stretch best;
   std::size_t start = 0;
-  for (std::size_t k = 0; k <= windows; ++k) {
-    if (k < windows && m[k] <= limit) continue;
-    if (k - start > best.windows) best = {start, k - start, 0.0, 0.0};
+  for (std::size_t k = 0; k <= m.size(); ++k) {
+    if (k < m.size() && m[k] <= limit) continue;
+    if (k - start > best.windows) best = {start, k - start, 0.0, 0.0, 0, 0};
     start = k + 1;
   }
   if (best.windows == 0) return best;
-  best.max_mismatch =
-      *std::max_element(m.begin() + static_cast<std::ptrdiff_t>(best.first),
-                        m.begin() + static_cast<std::ptrdiff_t>(best.first + best.windows));
+  const auto first = m.begin() + static_cast<std::ptrdiff_t>(best.first);
+  best.max_mismatch = *std::max_element(first, first + static_cast<std::ptrdiff_t>(best.windows));
   best.growth_per_step = log_slope(m, best.first, best.windows) / static_cast<double>(w);
+  best.lag_first = lags[best.first];
+  best.lag_last = lags[best.first + best.windows - 1];
   return best;
 }
 
@@ -113,6 +149,9 @@ void SelfRepetitionOptions::validate() const {
     bad("min_lag_periods", fmt::format("{}: must be > 0", min_lag_periods));
   }
   if (candidates == 0) bad("candidates", "0: at least 1 lag must be examined");
+  if (!(lag_drift >= 0.0 && lag_drift <= 0.5)) {
+    bad("lag_drift", fmt::format("{}: must lie between 0 and 0.5", lag_drift));
+  }
 }
 
 SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double period_samples,
@@ -144,11 +183,12 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
   }
   const std::vector<double> e = relative_mismatch(x, hi, two_var);
   const auto w = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(period_samples)));
+  const auto shift = static_cast<std::size_t>(std::floor(o.lag_drift * static_cast<double>(w)));
   s.run = true;
   s.mismatch = 2.0;  // above any real value: the first candidate always replaces it
   Stretch best;
   for (std::size_t L : candidate_lags(e, lo, hi, o.candidates)) {
-    const Stretch st = longest_stretch(x, L, w, two_var, o.max_mismatch);
+    const Stretch st = longest_stretch(x, L, w, shift, two_var, o.max_mismatch);
     if (st.windows > best.windows || (st.windows == best.windows && e[L] < s.mismatch)) {
       best = st;
       s.lag = L;
@@ -156,6 +196,8 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
     }
   }
   s.lag_s = static_cast<double>(s.lag) / rate_Hz;
+  s.lag_drift_s = (static_cast<double>(best.lag_last) - static_cast<double>(best.lag_first)) /
+                  rate_Hz;
   s.stretch_s = static_cast<double>(best.windows * w) / rate_Hz;
   s.share = static_cast<double>(best.windows * w) / static_cast<double>(n);
   s.stretch_max_mismatch = best.max_mismatch;

@@ -24,6 +24,10 @@ struct SelfRepetitionOptions {
   double min_lag_periods = 2.0;
   /// Local minima of the whole-overlap mismatch examined window by window.
   std::size_t candidates = 5;
+  /// The lag may follow a slow phase drift, by at most this fraction of a period from one
+  /// period-long window to the next: a shift along the flow is neutral (zero exponent), so
+  /// it cannot hide an exponential separation across it. 0: one fixed lag.
+  double lag_drift = 0.25;
   void validate() const;  ///< throws Error naming the option
 };
 
@@ -32,6 +36,7 @@ struct SelfRepetition {
   std::string reason;   ///< why not run, when not
   std::size_t lag = 0;  ///< samples: the lag with the longest small-mismatch stretch
   double lag_s = 0.0;
+  double lag_drift_s = 0.0;  ///< how far the followed lag moved along the stretch
   double mismatch = 0.0;  ///< RMS over the whole overlap at that lag / attractor size
   /// The longest run of one-period windows whose mismatch stays <= max_mismatch: its
   /// duration, share of the record, largest window mismatch, and the least-squares growth
