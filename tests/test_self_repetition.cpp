@@ -11,6 +11,7 @@
 
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/self_repetition.hpp"
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
@@ -109,6 +110,17 @@ TEST(SelfRepetition, TooShortARecordIsNotRun) {
   bool said = false;
   for (const std::string& line : v.evidence) said |= line.find("self-repetition: not run") == 5;
   EXPECT_TRUE(said);
+}
+
+TEST(SelfRepetition, BadOptionsAreNamed) {
+  AnalysisOptions o;
+  o.verdict.repetition.min_share = 1.0;
+  try {
+    (void)analyze_series(modulated(2000, 0.5, false), kRate, o);
+    FAIL() << "min_share = 1 accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("min_share"), std::string::npos) << e.what();
+  }
 }
 
 // A mismatch growing as e^(g t): a carrier plus a second tone whose amplitude grows at g.

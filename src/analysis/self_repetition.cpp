@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -185,7 +186,8 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
   const auto w = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(period_samples)));
   const auto shift = static_cast<std::size_t>(std::floor(o.lag_drift * static_cast<double>(w)));
   s.run = true;
-  s.mismatch = 2.0;  // above any real value: the first candidate always replaces it
+  // There is always a candidate (e has a smallest value on [lo, hi]), which replaces this.
+  s.mismatch = std::numeric_limits<double>::infinity();
   Stretch best;
   for (std::size_t L : candidate_lags(e, lo, hi, o.candidates)) {
     const Stretch st = longest_stretch(x, L, w, shift, two_var, o.max_mismatch);
