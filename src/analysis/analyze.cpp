@@ -233,7 +233,8 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
   run_exponents(x, rate_Hz, o, r);
-  e.repetition = self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition);
+  e.repetition =
+      self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));

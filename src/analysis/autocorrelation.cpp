@@ -30,9 +30,10 @@ Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::
   const std::size_t n = x.size();
   if (n < 16) throw Error("autocorrelation", fmt::format("{} samples: at least 16 are needed", n));
   if (max_lag == 0 || max_lag >= n) max_lag = n / 4;
-  const std::vector<double> raw = centred_lag_products(x);
-  if (!(raw[0] > 0.0)) throw Error("autocorrelation", "the series is constant");
   Autocorrelation a;
+  a.lag_products = centred_lag_products(x);
+  const std::vector<double>& raw = a.lag_products;
+  if (!(raw[0] > 0.0)) throw Error("autocorrelation", "the series is constant");
   a.rate_Hz = rate_Hz;
   a.r.resize(max_lag + 1);
   for (std::size_t k = 0; k <= max_lag; ++k) a.r[k] = raw[k] / raw[0];

@@ -18,13 +18,13 @@ namespace {
 // sqrt(2 var), for every lag up to max_lag at once: the squares of the two overlapping pieces
 // (prefix sums) minus twice the lag product (one FFT). Normalised per overlap, so long lags
 // are not favoured by a shorter sum.
-std::vector<double> relative_mismatch(std::span<const double> x, std::size_t max_lag,
+std::vector<double> relative_mismatch(std::span<const double> x,
+                                      std::span<const double> products, std::size_t max_lag,
                                       double two_var) {
   const std::size_t n = x.size();
   const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
   std::vector<double> squares(n + 1, 0.0);
   for (std::size_t i = 0; i < n; ++i) squares[i + 1] = squares[i] + (x[i] - mean) * (x[i] - mean);
-  const std::vector<double> products = centred_lag_products(x);
   std::vector<double> e(max_lag + 1);
   for (std::size_t L = 0; L <= max_lag; ++L) {
     const double sum = squares[n - L] + (squares[n] - squares[L]) - 2.0 * products[L];
@@ -76,32 +76,38 @@ double log_slope(const std::vector<double>& m, std::size_t first, std::size_t co
   return (c * stl - st * sl) / (c * stt - st * st);
 }
 
-// RMS of x[t + L] - x[t] over the window [t0, t0 + w), relative to the attractor's size.
-double window_mismatch(std::span<const double> x, std::size_t t0, std::size_t w, std::size_t L,
-                       double two_var) {
+// Sum of (x[t + L] - x[t])^2 over the window [t0, t0 + w), abandoned as soon as it reaches
+// `cap` (then only "not below cap" is known): most probes of a lag walk fail, and fail early.
+double window_sum(std::span<const double> x, std::size_t t0, std::size_t w, std::size_t L,
+                  double cap) {
   double sum = 0.0;
-  for (std::size_t t = t0; t < t0 + w; ++t) sum += (x[t + L] - x[t]) * (x[t + L] - x[t]);
-  return std::sqrt(sum / static_cast<double>(w) / two_var);
+  for (std::size_t t = t0; t < t0 + w && sum < cap; ++t) {
+    sum += (x[t + L] - x[t]) * (x[t + L] - x[t]);
+  }
+  return sum;
 }
 
 // The lag that best matches the window, found by stepping from `from` while the mismatch
-// falls, at most `shift` samples away and with the shifted window inside the record.
+// falls, at most `shift` samples away and with the shifted window inside the record; m is
+// its RMS mismatch relative to the attractor's size.
 std::size_t follow_lag(std::span<const double> x, std::size_t t0, std::size_t w,
                        std::size_t from, std::size_t shift, double two_var, double& m) {
+  constexpr double kAll = std::numeric_limits<double>::infinity();
   std::size_t L = from;
-  m = window_mismatch(x, t0, w, L, two_var);
+  double best = window_sum(x, t0, w, L, kAll);
   for (int step : {+1, -1}) {
     for (;;) {
       const std::size_t next = L + static_cast<std::size_t>(step);  // wraps below 0: rejected
       if (next < 1 || next > from + shift || next + shift < from || t0 + w + next > x.size()) {
         break;
       }
-      const double mn = window_mismatch(x, t0, w, next, two_var);
-      if (!(mn < m)) break;
+      const double sum = window_sum(x, t0, w, next, best);
+      if (!(sum < best)) break;
       L = next;
-      m = mn;
+      best = sum;
     }
   }
+  m = std::sqrt(best / static_cast<double>(w) / two_var);
   return L;
 }
 
@@ -156,7 +162,8 @@ void SelfRepetitionOptions::validate() const {
 }
 
 SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double period_samples,
-                               const SelfRepetitionOptions& o) {
+                               const SelfRepetitionOptions& o,
+                               std::span<const double> products) {
   SelfRepetition s;
   const std::size_t n = x.size();
   if (!(period_samples >= 1.0)) {
@@ -182,7 +189,11 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
     s.reason = "not run: the record is constant";
     return s;
   }
-  const std::vector<double> e = relative_mismatch(x, hi, two_var);
+  const std::vector<double> own = products.size() == n ? std::vector<double>{}
+                                                       : centred_lag_products(x);
+  const std::vector<double> e =
+      relative_mismatch(x, products.size() == n ? products : std::span<const double>(own), hi,
+                        two_var);
   const auto w = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(period_samples)));
   const auto shift = static_cast<std::size_t>(std::floor(o.lag_drift * static_cast<double>(w)));
   s.run = true;

@@ -18,6 +18,8 @@ struct Autocorrelation {
   /// periodic record (the biased estimator's taper), ~1/sqrt(N) for noise; the paper's
   /// "converged to zero" when small.
   double late_envelope = 0.0;
+  /// centred_lag_products of the series (all N lags), kept for the self-repetition check.
+  std::vector<double> lag_products;
 };
 
 /// sum_t y[t] y[t + k] for k = 0 .. N-1, y = x minus its mean (by FFT, zero padded).

@@ -46,7 +46,10 @@ struct SelfRepetition {
 };
 
 /// period_samples: the orbital period (sets the shortest lag and the window length).
+/// products: centred_lag_products(x) when already at hand (Autocorrelation::lag_products),
+/// else empty and computed here (one FFT of 2N points).
 SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double period_samples,
-                               const SelfRepetitionOptions& options = {});
+                               const SelfRepetitionOptions& options = {},
+                               std::span<const double> products = {});
 
 }  // namespace pneumachaos
