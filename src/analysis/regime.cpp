@@ -11,7 +11,6 @@ namespace {
 // The outcome of every criterion; see verdict_rule for how they combine.
 struct Criteria {
   bool steady = false, positive = false, deterministic = false;
-  bool repeats_itself = false;  ///< the self-repetition veto struck "positive" down
   bool diffusive = false, regular_K = false;  ///< 0-1 test median (both false when not run)
   bool clearly_regular = false;               ///< 0-1 test: even the upper quartile is low
   bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
@@ -67,13 +66,14 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
   }
   const double slowest =
       e.lyapunov_per_s - o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s;
-  c.repeats_itself = s.repeats && s.growth_per_s < slowest;
-  note(c.repeats_itself,
-       fmt::format("{}; its growth along the stretch {:.3g} 1/s below the slowest exponent the "
-                   "divergence supports ({:.3g} 1/s): {}",
-                   found, s.growth_per_s, slowest,
-                   c.repeats_itself ? "no exponential divergence (veto)" : "no veto"));
-  c.positive = !c.repeats_itself;
+  const bool veto = note(
+      s.repeats && s.growth_per_s < slowest,
+      fmt::format("{}; the mismatch grows along it at {:.3g} 1/s (a veto needs less than {:.3g} "
+                  "1/s, the slowest exponent the divergence supports): {}",
+                  found, s.growth_per_s, slowest,
+                  s.repeats && s.growth_per_s < slowest ? "no exponential divergence (veto)"
+                                                        : "no veto"));
+  c.positive = !veto;
 }
 
 void note_zero_one(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
