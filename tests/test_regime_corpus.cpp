@@ -20,13 +20,15 @@ using namespace pneumachaos::testing;
 std::string evidence_row(const CorpusRecord& c, std::size_t n, const AnalysisResult& r) {
   const RegimeEvidence& e = r.evidence;
   return fmt::format("{:<22} {:>6} {:<15} {:<15} lam {:8.4g} +- {:<8.2g} K {:5.2f} [{:4.2f} {:4.2f}] pred {:6.3f}/{:6.3f} "
-                     "acf {:5.2f} bb {:5.2f} line2 {:6.3g}{} sur {} {} {:.3f}",
+                     "acf {:5.2f} bb {:5.2f} line2 {:6.3g}{} sur {} {} {:.3f} repeat {:4.2f} of record, "
+                     "mismatch {:.3f}",
                      c.name, n, regime_name(c.expected), regime_name(r.verdict.regime),
                      e.lyapunov_found ? e.lyapunov_per_s : 0.0, e.lyapunov_uncertainty_per_s,
                      e.zero_one_run ? e.zero_one_K : -1.0, e.zero_one_q25, e.zero_one_q75, e.prediction_nonlinear,
                      e.prediction_linear, e.late_acf, e.broadband_share, e.second_line_power,
                      e.second_line_incommensurate ? " incomm" : "", e.surrogate_run ? 1 : 0,
-                     e.surrogate_rank, r.surrogate.statistic);
+                     e.surrogate_rank, r.surrogate.statistic, e.repetition.share,
+                     e.repetition.mismatch);
 }
 
 // Records the verdict does not get right yet, with the honest fallback it must give instead

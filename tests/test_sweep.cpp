@@ -253,8 +253,9 @@ TEST(Sweep, AJournalOfTheOlderRecordFormatIsRefusedAsAnotherVersion) {
   std::ofstream(dir + "/journal.csv", std::ios::binary)
       << header.substr(0, header.size() - fields.size()) << ", 21 fields\n";
   const std::string message = resume_error(spec, dir);
-  EXPECT_NE(message.find("another version of pneumachaos (records of 21 fields; this version "
-                         "writes 24 fields)"),
+  EXPECT_NE(message.find(fmt::format("another version of pneumachaos (records of 21 fields; "
+                                     "this version writes {} fields)",
+                                     RunRecord::kFields)),
             std::string::npos)
       << message;
   std::filesystem::remove_all(dir);
@@ -266,11 +267,13 @@ TEST(Sweep, ARecordWithTheModelExponentRoundTrips) {
   r.lambda_model = 4.0 / 3.0;
   r.lambda_model_uncertainty = 0.1;
   r.lambda_model_span_s = 6.48;
+  r.repeat_share = 0.75;
   r.reason = "model exponent: why";
   const RunRecord back = RunRecord::decode(r.encode());
   EXPECT_EQ(back.lambda_model, r.lambda_model);
   EXPECT_EQ(back.lambda_model_uncertainty, r.lambda_model_uncertainty);
   EXPECT_EQ(back.lambda_model_span_s, r.lambda_model_span_s);
+  EXPECT_EQ(back.repeat_share, r.repeat_share);
   EXPECT_EQ(back.reason, r.reason);
   EXPECT_TRUE(std::isnan(RunRecord::decode(RunRecord{}.encode()).lambda_model));
 }

@@ -59,6 +59,24 @@ nlohmann::json prediction_json(const AnalysisResult& r) {
           {"ratio", quantity(p.computed ? p.ratio() : NAN, "-")}};
 }
 
+// Numbers are null when not run (too short a record, no period), never NaN.
+nlohmann::json repetition_json(const AnalysisResult& r) {
+  const SelfRepetition& s = r.evidence.repetition;
+  const auto value = [&](double v, const char* unit) { return quantity(s.run ? v : NAN, unit); };
+  return {{"run", s.run},
+          {"reason", s.reason},
+          {"lag", value(s.lag_s, "s")},
+          {"lag_samples", s.lag},
+          {"lag_drift", value(s.lag_drift_s, "s")},
+          {"mismatch", value(s.mismatch, "-")},
+          {"stretch", value(s.stretch_s, "s")},
+          {"share", value(s.share, "-")},
+          {"stretch_max_mismatch", value(s.stretch_max_mismatch, "-")},
+          {"growth", value(s.growth_per_s, "1/s")},
+          {"repeats", s.repeats},
+          {"method", "RMS of x(t + L) - x(t) relative to sqrt(2) std, per one-period window"}};
+}
+
 std::string evidence_summary(const AnalysisResult& r) {
   const ZeroOneResult& z = r.zero_one;
   std::string out = z.run ? fmt::format("0-1 test: K = {:.3f} (quartiles {:.3f} .. {:.3f}), "
@@ -76,6 +94,11 @@ std::string evidence_summary(const AnalysisResult& r) {
                              t.statistic, t.rank, t.surrogate_statistics.size(), t.p_value,
                              t.rejected ? "rejected" : "kept")
                : fmt::format("surrogate test: {}\n", t.reason);
+  const SelfRepetition& s = r.evidence.repetition;
+  out += s.run ? fmt::format("self-repetition: lag {:.4g} s, mismatch {:.3g} of the attractor's "
+                             "size (whole overlap), small over {:.0f} % of the record\n",
+                             s.lag_s, s.mismatch, 100.0 * s.share)
+               : fmt::format("self-repetition: {}\n", s.reason);
   return out;
 }
 
@@ -203,6 +226,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["zero_one"] = zero_one_json(r);
   j["surrogate"] = surrogate_json(r);
   j["prediction"] = prediction_json(r);
+  j["self_repetition"] = repetition_json(r);
   j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},

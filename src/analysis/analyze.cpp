@@ -122,6 +122,7 @@ void note_lines(AnalysisResult& r) {
 void AnalysisOptions::validate() const {
   zero_one.validate();
   surrogates.validate();
+  verdict.repetition.validate();
 }
 
 namespace {
@@ -232,6 +233,8 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
   run_exponents(x, rate_Hz, o, r);
+  e.repetition =
+      self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));

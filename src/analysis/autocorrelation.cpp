@@ -11,19 +11,29 @@
 
 namespace pneumachaos {
 
-Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::size_t max_lag) {
+std::vector<double> centred_lag_products(std::span<const double> x) {
   const std::size_t n = x.size();
-  if (n < 16) throw Error("autocorrelation", fmt::format("{} samples: at least 16 are needed", n));
-  if (max_lag == 0 || max_lag >= n) max_lag = n / 4;
-  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
   std::vector<double> centred(n);
   for (std::size_t i = 0; i < n; ++i) centred[i] = x[i] - mean;
   // Zero padding to >= 2N makes the circular correlation equal the linear one.
   auto X = forward_dft(centred, fast_fft_size(2 * n));
   for (auto& c : X) c = std::norm(c);
-  const std::vector<double> raw = inverse_dft_real(X);
-  if (!(raw[0] > 0.0)) throw Error("autocorrelation", "the series is constant");
+  std::vector<double> raw = inverse_dft_real(X);
+  const double scale = 1.0 / static_cast<double>(X.size());  // the inverse's missing 1/size
+  raw.resize(n);
+  for (double& v : raw) v *= scale;
+  return raw;
+}
+
+Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::size_t max_lag) {
+  const std::size_t n = x.size();
+  if (n < 16) throw Error("autocorrelation", fmt::format("{} samples: at least 16 are needed", n));
+  if (max_lag == 0 || max_lag >= n) max_lag = n / 4;
   Autocorrelation a;
+  a.lag_products = centred_lag_products(x);
+  const std::vector<double>& raw = a.lag_products;
+  if (!(raw[0] > 0.0)) throw Error("autocorrelation", "the series is constant");
   a.rate_Hz = rate_Hz;
   a.r.resize(max_lag + 1);
   for (std::size_t k = 0; k <= max_lag; ++k) a.r[k] = raw[k] / raw[0];

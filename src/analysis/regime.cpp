@@ -43,6 +43,39 @@ void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note
                         "region"));
 }
 
+// A near-repeat x(t + L) ~ x(t) is a pair of nearby states; under a positive exponent its
+// mismatch would grow at that rate until it reached the attractor's size. Staying small over
+// most of the record and growing slower than the slowest exponent the divergence test
+// supports refutes the divergence (docs/analysis.md "Regime verdict").
+void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
+                     Criteria& c) {
+  const SelfRepetition& s = e.repetition;
+  if (!s.run) {
+    note.info("self-repetition: " + s.reason);
+    return;
+  }
+  const std::string found = fmt::format(
+      "record repeats itself: at lag {:.4g} s (drifting {:+.3g} s) the one-period windows' "
+      "mismatch stays <= {} of the attractor's size over {:.3g} s = {:.0f} % of the record "
+      "(need {:.0f} %; largest {:.3g}; at the fixed lag over the whole overlap {:.3g})",
+      s.lag_s, s.lag_drift_s, o.repetition.max_mismatch, s.stretch_s, 100.0 * s.share,
+      100.0 * o.repetition.min_share, s.stretch_max_mismatch, s.mismatch);
+  if (!c.positive) {
+    note(s.repeats, found);
+    return;
+  }
+  const double slowest =
+      e.lyapunov_per_s - o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s;
+  const bool veto = note(
+      s.repeats && s.growth_per_s < slowest,
+      fmt::format("{}; the mismatch grows along it at {:.3g} 1/s (a veto needs less than {:.3g} "
+                  "1/s, the slowest exponent the divergence supports): {}",
+                  found, s.growth_per_s, slowest,
+                  s.repeats && s.growth_per_s < slowest ? "no exponential divergence (veto)"
+                                                        : "no veto"));
+  c.positive = !veto;
+}
+
 void note_zero_one(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
   if (!e.zero_one_run) {
     note.info("0-1 test: " + e.zero_one_note);
@@ -146,14 +179,16 @@ const char* regime_name(Regime r) {
 }
 
 std::string verdict_rule(const VerdictOptions&) {
-  return "deterministic = more predictable than every surrogate (where run; else prediction "
-         "ratio low); chaotic = exponential divergence AND deterministic AND NOT (0-1 K's upper "
-         "quartile low, where run); else stick-slip if flagged; else "
+  return "exponential divergence = the divergence curve rises above 3 sigma AND NOT the record "
+         "repeats itself (a small mismatch at one lag over most of the record, growing slower "
+         "than that rise); deterministic = more predictable than every surrogate (where run; "
+         "else prediction ratio low); chaotic = exponential divergence AND deterministic AND "
+         "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged; else "
          "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
          "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
-         "incommensurate line, periodic without; else stochastic = NOT deterministic AND (surrogates "
-         "keep the linear null, where run) AND 0-1 K high (the test must have run); else "
-         "undetermined";
+         "incommensurate line, periodic without; else stochastic = NOT deterministic AND "
+         "(surrogates keep the linear null, where run) AND 0-1 K high (the test must have run); "
+         "else undetermined";
 }
 
 bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
@@ -180,6 +215,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
                                                e.last_half_std, o.steady_variation, scale));
   if (!c.steady) {
     note_exponent(e, o, note, c);
+    note_repetition(e, o, note, c);
     note_zero_one(e, o, note, c);
     note_determinism(e, o, note, c);
     note_regularity(e, o, note, c);

@@ -37,6 +37,7 @@ void record_analysis(const AnalysisResult& a, RunRecord& r) {
   r.stick_slip = a.verdict.stick_slip;
   if (a.zero_one.run) r.zero_one_K = a.zero_one.K;
   if (a.prediction.computed) r.prediction_ratio = a.prediction.ratio();
+  if (a.evidence.repetition.run) r.repeat_share = a.evidence.repetition.share;
 }
 
 void add_reason(RunRecord& r, const std::string& why) {

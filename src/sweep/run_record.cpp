@@ -36,16 +36,16 @@ std::uint64_t to_u64(const std::string& f) {
 std::string RunRecord::csv_header() {
   return "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
          "lambda_per_s,lambda_uncertainty_per_s,wolf_per_s,broadband_share,late_acf,regime,"
-         "chaotic,stick_slip,zero_one_K,prediction_ratio,lambda_model_per_s,"
+         "chaotic,stick_slip,zero_one_K,prediction_ratio,repeat_share,lambda_model_per_s,"
          "lambda_model_uncertainty_per_s,lambda_model_span_s,reason";
 }
 
 std::string RunRecord::encode() const {
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                      point, repeat, seed, ok ? 1 : 0, clean(termination), t_final_s, steps, sticks,
                      mean_v, std_v, lambda, lambda_uncertainty, wolf, broadband, late_acf, regime,
                      chaotic ? 1 : 0, stick_slip ? 1 : 0, zero_one_K, prediction_ratio,
-                     lambda_model, lambda_model_uncertainty, lambda_model_span_s, clean(reason));
+                     repeat_share, lambda_model, lambda_model_uncertainty, lambda_model_span_s, clean(reason));
 }
 
 RunRecord RunRecord::decode(const std::string& line) {
@@ -73,10 +73,11 @@ RunRecord RunRecord::decode(const std::string& line) {
   r.stick_slip = f[17] == "1";
   r.zero_one_K = to_double(f[18]);
   r.prediction_ratio = to_double(f[19]);
-  r.lambda_model = to_double(f[20]);
-  r.lambda_model_uncertainty = to_double(f[21]);
-  r.lambda_model_span_s = to_double(f[22]);
-  r.reason = f[23];
+  r.repeat_share = to_double(f[20]);
+  r.lambda_model = to_double(f[21]);
+  r.lambda_model_uncertainty = to_double(f[22]);
+  r.lambda_model_span_s = to_double(f[23]);
+  r.reason = f[24];
   return r;
 }
 

@@ -18,7 +18,12 @@ struct Autocorrelation {
   /// periodic record (the biased estimator's taper), ~1/sqrt(N) for noise; the paper's
   /// "converged to zero" when small.
   double late_envelope = 0.0;
+  /// centred_lag_products of the series (all N lags), kept for the self-repetition check.
+  std::vector<double> lag_products;
 };
+
+/// sum_t y[t] y[t + k] for k = 0 .. N-1, y = x minus its mean (by FFT, zero padded).
+std::vector<double> centred_lag_products(std::span<const double> x);
 
 /// ACF up to max_lag (default N/4). Throws Error for fewer than 16 samples or a constant series.
 Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::size_t max_lag = 0);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/analysis/self_repetition.hpp"
+
 namespace pneumachaos {
 
 enum class Regime {
@@ -52,6 +54,9 @@ struct VerdictOptions {
   /// Quasi-periodic: a second spectral line, not a rational multiple p/q (q <= 3) of the
   /// first, carrying at least this fraction of the first line's power.
   double second_line_min_power = 0.01;
+  /// Self-repetition veto: a record that repeats itself at one lag over most of its length,
+  /// with a mismatch that does not grow at the claimed rate, has no exponential divergence.
+  SelfRepetitionOptions repetition;
 };
 
 /// The numbers the verdict reads (computed by analyze_series).
@@ -78,6 +83,7 @@ struct RegimeEvidence {
   /// Second spectral line (relative power; 0 when none) and its frequency ratio to the first.
   double second_line_power = 0.0, second_line_ratio = 0.0;
   bool second_line_incommensurate = false;
+  SelfRepetition repetition;  ///< computed with VerdictOptions::repetition
 };
 
 struct Verdict {

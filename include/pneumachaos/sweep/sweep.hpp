@@ -60,6 +60,7 @@ struct RunRecord {
   bool chaotic = false, stick_slip = false;
   double zero_one_K = kNaN;        ///< the 0-1 test's median K (NaN: not run)
   double prediction_ratio = kNaN;  ///< local-constant / linear prediction error
+  double repeat_share = kNaN;  ///< share of the record over which it repeats itself (veto)
   /// The model's own exponent and its standard error (NaN: not asked for, or not measurable;
   /// `reason` then says why) and the time it spans.
   double lambda_model = kNaN, lambda_model_uncertainty = kNaN, lambda_model_span_s = kNaN;
@@ -67,7 +68,7 @@ struct RunRecord {
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
   /// Fields of an encoded record; part of the journal's header, so a journal written in
   /// another record format is refused as such.
-  static constexpr std::size_t kFields = 24;
+  static constexpr std::size_t kFields = 25;
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
   static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
   static std::string csv_header();
