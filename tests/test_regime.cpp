@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -74,6 +75,51 @@ TEST(Regime, StickSlipAndSteadyRecords) {
   const AnalysisResult d = analyze_series(damped, 1000.0);
   EXPECT_EQ(d.verdict.regime, Regime::kSteady);
   EXPECT_FALSE(d.verdict.stick_slip);
+}
+
+// Stick-slip whose slips follow a rule: each slip a half sine after a rest, the n-th slip's
+// peak speed and duration set by slip_size(n) in [0, 1] (rest 40 % of a nominal 500-sample
+// cycle, like the corpus's stick-slip record).
+template <typename SlipSize>
+std::vector<double> slips(std::size_t n, SlipSize slip_size) {
+  std::vector<double> v;
+  v.reserve(n);
+  for (std::size_t k = 0; v.size() < n; ++k) {
+    const double size = slip_size(k);
+    v.insert(v.end(), 200, 0.0);
+    const auto len = static_cast<std::size_t>(std::lround(200.0 + 200.0 * size));
+    for (std::size_t i = 0; i < len; ++i) {
+      v.push_back((0.05 + 0.1 * size) *
+                  std::sin(std::numbers::pi * static_cast<double>(i) / static_cast<double>(len)));
+    }
+  }
+  v.resize(n);
+  return v;
+}
+
+TEST(Regime, PeriodTwoStickSlipIsNotChaotic) {
+  // Slips alternate between two sizes: periodic stick-slip, period two cycles. Any evidence of
+  // chaos between rests must leave it alone (docs/analysis.md "Tried and not adopted: chaos
+  // between rests from the 0-1 test").
+  for (std::size_t n : {5000, 10000}) {
+    const auto v = slips(n, [](std::size_t k) { return k % 2 == 0 ? 0.2 : 0.9; });
+    const AnalysisResult r = analyze_series(v, 1000.0);
+    EXPECT_TRUE(r.verdict.stick_slip) << n;
+    EXPECT_FALSE(r.verdict.chaotic) << n;
+    EXPECT_EQ(r.verdict.regime, Regime::kStickSlip) << n;
+  }
+}
+
+TEST(Regime, StickSlipWithChaoticSlipsIsChaotic) {
+  // The slips' sizes follow the logistic map x -> 4 x (1 - x) (Lyapunov exponent ln 2 per
+  // slip): chaos in the slip sequence, rests between. Here the divergence curve does rise
+  // (slips vary in length, so the rests do not line up); chaotic and stick-slip together.
+  double x = 0.3;
+  const auto v = slips(10000, [&x](std::size_t) { return x = 4.0 * x * (1.0 - x); });
+  const AnalysisResult r = analyze_series(v, 1000.0);
+  EXPECT_TRUE(r.verdict.stick_slip);
+  EXPECT_TRUE(r.verdict.chaotic);
+  EXPECT_EQ(r.verdict.regime, Regime::kChaotic);
 }
 
 TEST(Regime, TooShortOrNonFiniteSeriesIsAnError) {
