@@ -66,13 +66,11 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
   }
   const double slowest =
       e.lyapunov_per_s - o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s;
-  const bool veto = note(
-      s.repeats && s.growth_per_s < slowest,
-      fmt::format("{}; the mismatch grows along it at {:.3g} 1/s (a veto needs less than {:.3g} "
-                  "1/s, the slowest exponent the divergence supports): {}",
-                  found, s.growth_per_s, slowest,
-                  s.repeats && s.growth_per_s < slowest ? "no exponential divergence (veto)"
-                                                        : "no veto"));
+  const bool veto = s.repeats && s.growth_per_s < slowest;
+  note(veto, fmt::format("{}; the mismatch grows along it at {:.3g} 1/s (a veto needs less than "
+                         "{:.3g} 1/s, the slowest exponent the divergence supports): {}",
+                         found, s.growth_per_s, slowest,
+                         veto ? "no exponential divergence (veto)" : "no veto"));
   c.positive = !veto;
 }
 

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -18,11 +18,10 @@ namespace {
 // sqrt(2 var), for every lag up to max_lag at once: the squares of the two overlapping pieces
 // (prefix sums) minus twice the lag product (one FFT). Normalised per overlap, so long lags
 // are not favoured by a shorter sum.
-std::vector<double> relative_mismatch(std::span<const double> x,
+std::vector<double> relative_mismatch(std::span<const double> x, double mean,
                                       std::span<const double> products, std::size_t max_lag,
                                       double two_var) {
   const std::size_t n = x.size();
-  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
   std::vector<double> squares(n + 1, 0.0);
   for (std::size_t i = 0; i < n; ++i) squares[i + 1] = squares[i] + (x[i] - mean) * (x[i] - mean);
   std::vector<double> e(max_lag + 1);
@@ -181,7 +180,7 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
         o.min_lag_periods / (1.0 - o.min_share));
     return s;
   }
-  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
+  const double mean = mean_of(x);
   double ss = 0.0;
   for (double v : x) ss += (v - mean) * (v - mean);
   const double two_var = 2.0 * ss / static_cast<double>(n);
@@ -192,8 +191,8 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
   const std::vector<double> own = products.size() == n ? std::vector<double>{}
                                                        : centred_lag_products(x);
   const std::vector<double> e =
-      relative_mismatch(x, products.size() == n ? products : std::span<const double>(own), hi,
-                        two_var);
+      relative_mismatch(x, mean, products.size() == n ? products : std::span<const double>(own),
+                        hi, two_var);
   const auto w = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(period_samples)));
   const auto shift = static_cast<std::size_t>(std::floor(o.lag_drift * static_cast<double>(w)));
   s.run = true;
