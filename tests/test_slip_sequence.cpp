@@ -64,7 +64,7 @@ TEST(SlipSequence, DisplacementsOfGeneratedSlips) {
   const auto rests = find_rests(v, 0.01 * 0.15, 5);
   // Each rest is kRest zeros plus the slip's first sample (sin 0 = 0) and, where it is
   // below 1 % of the peak, the slip's last samples: a rest per gap, the ends included.
-  ASSERT_EQ(rests.size(), sizes.size() + 1);
+  ASSERT_EQ(rests.intervals.size(), sizes.size() + 1);
   const std::vector<double> d = slip_displacements(v, kRate, rests);
   ASSERT_EQ(d.size(), sizes.size());
   for (std::size_t k = 0; k < sizes.size(); ++k) {
@@ -73,6 +73,17 @@ TEST(SlipSequence, DisplacementsOfGeneratedSlips) {
     // The samples left in the rests are below 1 % of the peak: a few 1e-3 of the area.
     EXPECT_NEAR(d[k], exact, 3e-3 * exact) << k;
   }
+}
+
+TEST(SlipSequence, CreepInsideTheRestBandIsNoSlip) {
+  // A rest broken by a creep that stays inside the band |x| <= level (its spread exceeds half
+  // the level, so the rest detection splits the rest there) holds no slip: still 4 slips.
+  std::vector<double> v = stick_slip({0.0, 0.5, 1.0, 0.25});
+  const double level = 0.01 * 0.15;
+  for (std::size_t i = 0; i < 30; ++i) v.insert(v.begin() + 130, 0.9 * level);
+  const auto rests = find_rests(v, level, 5);
+  EXPECT_GT(rests.intervals.size(), 5u);
+  EXPECT_EQ(slip_displacements(v, kRate, rests).size(), 4u);
 }
 
 TEST(SlipSequence, PeriodicSlipsAreNotChaotic) {

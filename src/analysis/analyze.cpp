@@ -12,10 +12,10 @@ namespace pneumachaos {
 namespace {
 
 // Rest statistics for the stick-slip flag, from the rests the slip sequence also reads.
-void note_rests(std::span<const RestInterval> rests, std::size_t samples, RegimeEvidence& e) {
+void note_rests(const Rests& rests, std::size_t samples, RegimeEvidence& e) {
   std::size_t at_rest = 0;
-  for (const RestInterval& r : rests) at_rest += r.last - r.first;
-  e.rest_intervals = rests.size();
+  for (const RestInterval& r : rests.intervals) at_rest += r.last - r.first;
+  e.rest_intervals = rests.intervals.size();
   e.rest_share = static_cast<double>(at_rest) / static_cast<double>(samples);
 }
 
@@ -121,8 +121,8 @@ void check_record(std::span<const double> x, double rate_Hz) {
 
 // Mean, spread, range and rests: the evidence every record gets, constant or not.
 // Returns the rests (the slip sequence reads them).
-std::vector<RestInterval> describe_record(std::span<const double> x, const AnalysisOptions& o,
-                                          AnalysisResult& r) {
+Rests describe_record(std::span<const double> x, const AnalysisOptions& o,
+                      AnalysisResult& r) {
   r.samples = x.size();
   r.mean = mean_of(x);
   r.standard_deviation = standard_deviation(x);
@@ -191,7 +191,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   o.validate();
   AnalysisResult r;
   r.rate_Hz = rate_Hz;
-  const std::vector<RestInterval> rests = describe_record(x, o, r);
+  const Rests rests = describe_record(x, o, r);
   RegimeEvidence& e = r.evidence;
   if (!(r.standard_deviation > 0.0)) {
     // A constant record: steady by definition; no index is defined.

@@ -101,9 +101,9 @@ void note_determinism(std::span<const double> s, const SlipSequenceOptions& o,
 
 }  // namespace
 
-std::vector<RestInterval> find_rests(std::span<const double> x, double level,
-                                     std::size_t min_samples) {
-  std::vector<RestInterval> rests;
+Rests find_rests(std::span<const double> x, double level, std::size_t min_samples) {
+  Rests found{level, {}};
+  std::vector<RestInterval>& rests = found.intervals;
   std::size_t run = 0;
   double lo = 0.0, hi = 0.0;
   const auto close_run = [&](std::size_t end) {
@@ -126,16 +126,20 @@ std::vector<RestInterval> find_rests(std::span<const double> x, double level,
     }
   }
   close_run(x.size());
-  return rests;
+  return found;
 }
 
 std::vector<double> slip_displacements(std::span<const double> x, double rate_Hz,
-                                       std::span<const RestInterval> rests) {
+                                       const Rests& rests) {
   std::vector<double> slips;
-  for (std::size_t r = 0; r + 1 < rests.size(); ++r) {
-    double sum = 0.0;
-    for (std::size_t i = rests[r].last; i < rests[r + 1].first; ++i) sum += x[i];
-    slips.push_back(sum / rate_Hz);
+  const std::vector<RestInterval>& r = rests.intervals;
+  for (std::size_t k = 0; k + 1 < r.size(); ++k) {
+    double sum = 0.0, peak = 0.0;
+    for (std::size_t i = r[k].last; i < r[k + 1].first; ++i) {
+      sum += x[i];
+      peak = std::max(peak, std::abs(x[i]));
+    }
+    if (peak > rests.level) slips.push_back(sum / rate_Hz);
   }
   return slips;
 }
@@ -178,7 +182,7 @@ SlipSequenceTest slip_sequence_test(std::span<const double> s, const SlipSequenc
 }
 
 SlipSequenceTest slip_sequence_test(std::span<const double> x, double rate_Hz,
-                                    std::span<const RestInterval> rests,
+                                    const Rests& rests,
                                     const SlipSequenceOptions& o) {
   const std::vector<double> slips = slip_displacements(x, rate_Hz, rests);
   return slip_sequence_test(slips, o);

@@ -20,17 +20,24 @@ struct RestInterval {
   std::size_t first = 0, last = 0;
 };
 
+/// The rest intervals of a record and the band |x| <= level they were found in.
+struct Rests {
+  double level = 0.0;
+  std::vector<RestInterval> intervals;
+};
+
 /// Rests: runs of at least min_samples samples with |x| <= level whose spread stays within
 /// level / 2 (a smooth passage through zero spreads over the whole band and is no rest).
 /// The one rest detection of the analysis: the stick-slip flag and the slip sequence read it.
-std::vector<RestInterval> find_rests(std::span<const double> x, double level,
-                                     std::size_t min_samples);
+Rests find_rests(std::span<const double> x, double level, std::size_t min_samples);
 
-/// The slips: each run of samples between two consecutive rests (the partial slips before
-/// the first rest and after the last are left out), reduced to its displacement, the sum of
-/// x over the slip divided by the sample rate (x a velocity: the distance slid).
+/// The slips: each run of samples between two rests that leaves the rest band |x| <= level
+/// (the partial slips before the first rest and after the last are left out), reduced to its
+/// displacement, the sum of x over the slip divided by the sample rate (x a velocity: the
+/// distance slid). Two rests that touch, or are parted only by a creep inside the band
+/// (a rest broken by its spread), are one rest: no slip between them.
 std::vector<double> slip_displacements(std::span<const double> x, double rate_Hz,
-                                       std::span<const RestInterval> rests);
+                                       const Rests& rests);
 
 struct SlipSequenceOptions {
   /// Fewer slips: not run. A return map needs its range covered: with 20 slips the two nearest
@@ -77,7 +84,7 @@ struct SlipSequenceTest {
 
 /// The test on the displacement sequence of the slips between `rests`.
 SlipSequenceTest slip_sequence_test(std::span<const double> x, double rate_Hz,
-                                    std::span<const RestInterval> rests,
+                                    const Rests& rests,
                                     const SlipSequenceOptions& options = {});
 
 /// The same test on a sequence already reduced to one number per slip.
