@@ -84,6 +84,15 @@ TEST(SlipSequence, CreepInsideTheRestBandIsNoSlip) {
   const auto rests = find_rests(v, level, 5);
   EXPECT_GT(rests.intervals.size(), 5u);
   EXPECT_EQ(slip_displacements(v, kRate, rests).size(), 4u);
+  // A creep burst above the band but far below a slip (3 % of the peak speed, as a frozen-rig
+  // record shows between slips) is no slip either; at a threshold below it, it is one.
+  for (std::size_t i = 0; i < 20; ++i) {
+    const double bump = std::sin(std::numbers::pi * static_cast<double>(i) / 20.0);
+    v.insert(v.begin() + 120 + static_cast<std::ptrdiff_t>(i), 0.03 * 0.15 * bump);
+  }
+  const auto crept = find_rests(v, level, 5);
+  EXPECT_EQ(slip_displacements(v, kRate, crept, 0.1 * 0.15).size(), 4u);
+  EXPECT_EQ(slip_displacements(v, kRate, crept, 0.01 * 0.15).size(), 5u);
 }
 
 TEST(SlipSequence, PeriodicSlipsAreNotChaotic) {
@@ -181,6 +190,9 @@ TEST(SlipSequence, BadOptionsNameTheOption) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("slip_sequence.min_slips"), std::string::npos);
   }
+  o = {};
+  o.min_peak_fraction = 1.5;
+  EXPECT_THROW(o.validate(), Error);
   o = {};
   o.max_error_ratio = 0.0;
   EXPECT_THROW(o.validate(), Error);

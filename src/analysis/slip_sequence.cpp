@@ -130,7 +130,8 @@ Rests find_rests(std::span<const double> x, double level, std::size_t min_sample
 }
 
 std::vector<double> slip_displacements(std::span<const double> x, double rate_Hz,
-                                       const Rests& rests) {
+                                       const Rests& rests, double min_peak) {
+  const double threshold = std::max(min_peak, rests.level);
   std::vector<double> slips;
   const std::vector<RestInterval>& r = rests.intervals;
   for (std::size_t k = 0; k + 1 < r.size(); ++k) {
@@ -139,7 +140,7 @@ std::vector<double> slip_displacements(std::span<const double> x, double rate_Hz
       sum += x[i];
       peak = std::max(peak, std::abs(x[i]));
     }
-    if (peak > rests.level) slips.push_back(sum / rate_Hz);
+    if (peak > threshold) slips.push_back(sum / rate_Hz);
   }
   return slips;
 }
@@ -149,6 +150,9 @@ void SlipSequenceOptions::validate() const {
   if (neighbours == 0) throw Error("slip_sequence.neighbours", "must be at least 1");
   if (max_dimension == 0) throw Error("slip_sequence.max_dimension", "must be at least 1");
   if (!(max_error_ratio > 0.0)) throw Error("slip_sequence.max_error_ratio", "must be > 0");
+  if (!(min_peak_fraction >= 0.0 && min_peak_fraction <= 1.0)) {
+    throw Error("slip_sequence.min_peak_fraction", "must be in [0, 1]");
+  }
   if (!(min_variation >= 0.0)) throw Error("slip_sequence.min_variation", "must be >= 0");
   if (!(max_repeat_mismatch >= 0.0)) {
     throw Error("slip_sequence.max_repeat_mismatch", "must be >= 0");
@@ -184,7 +188,10 @@ SlipSequenceTest slip_sequence_test(std::span<const double> s, const SlipSequenc
 SlipSequenceTest slip_sequence_test(std::span<const double> x, double rate_Hz,
                                     const Rests& rests,
                                     const SlipSequenceOptions& o) {
-  const std::vector<double> slips = slip_displacements(x, rate_Hz, rests);
+  double max_abs = 0.0;
+  for (double v : x) max_abs = std::max(max_abs, std::abs(v));
+  const std::vector<double> slips =
+      slip_displacements(x, rate_Hz, rests, o.min_peak_fraction * max_abs);
   return slip_sequence_test(slips, o);
 }
 

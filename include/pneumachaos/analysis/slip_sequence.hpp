@@ -31,19 +31,24 @@ struct Rests {
 /// The one rest detection of the analysis: the stick-slip flag and the slip sequence read it.
 Rests find_rests(std::span<const double> x, double level, std::size_t min_samples);
 
-/// The slips: each run of samples between two rests that leaves the rest band |x| <= level
+/// The slips: each run of samples between two rests whose peak |x| exceeds min_peak
 /// (the partial slips before the first rest and after the last are left out), reduced to its
 /// displacement, the sum of x over the slip divided by the sample rate (x a velocity: the
-/// distance slid). Two rests that touch, or are parted only by a creep inside the band
-/// (a rest broken by its spread), are one rest: no slip between them.
+/// distance slid). Rests parted by less (touching, a creep inside the rest band, a creep
+/// burst) are one stick: no slip between them. min_peak below the rest level counts as it.
 std::vector<double> slip_displacements(std::span<const double> x, double rate_Hz,
-                                       const Rests& rests);
+                                       const Rests& rests, double min_peak = 0.0);
 
 struct SlipSequenceOptions {
   /// Fewer slips: not run. A return map needs its range covered: with 20 slips the two nearest
   /// neighbours of a slip lie ~1/10 of the range away, still far finer than a chaotic map's
   /// spread of its images.
   std::size_t min_slips = 20;
+  /// A slip reaches at least this fraction of the record's max |x|, ten times the rest band
+  /// (1 %): a release of the stick, not a creep burst a little above the band (a frozen-rig
+  /// record creeps at 1.5-3 % of its peak speed 3-4 times per stick, irregularly;
+  /// docs/analysis.md "Slip sequence").
+  double min_peak_fraction = 0.1;
   /// IAAFT surrogates of the sequence (39: a one-sided rank test at p = 1/40 = 0.025).
   std::size_t surrogates = 39;
   std::uint64_t seed = 1;
