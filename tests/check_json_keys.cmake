@@ -6,9 +6,7 @@ foreach(path "lyapunov;wolf;value" "lyapunov;wolf;unit" "lyapunov;divergence;val
              "verdict;chaotic" "verdict;stick_slip" "zero_one;run" "zero_one;K;value"
              "zero_one;K;unit" "zero_one;K_q25;value" "zero_one;K_q75;value" "zero_one;step;unit"
              "surrogate;run" "surrogate;count" "surrogate;rank" "surrogate;p_value;value"
-             "surrogate;null_rejected" "surrogate;statistic;value" "prediction;ratio;value"
-             "slip_sequence;run" "slip_sequence;reason" "slip_sequence;slips"
-             "slip_sequence;chaotic")
+             "surrogate;null_rejected" "surrogate;statistic;value" "prediction;ratio;value")
   string(JSON value ERROR_VARIABLE err GET "${json}" ${path})
   if(err)
     message(FATAL_ERROR "missing key ${path}: ${err}")

@@ -2,9 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <span>
-#include <string>
 #include <numbers>
 #include <vector>
 
@@ -123,95 +120,6 @@ TEST(Regime, StickSlipWithChaoticSlipsIsChaotic) {
   EXPECT_TRUE(r.verdict.stick_slip);
   EXPECT_TRUE(r.verdict.chaotic);
   EXPECT_EQ(r.verdict.regime, Regime::kChaotic);
-}
-
-// The evidence of a stick-slip record whose divergence curve found no linear region (the
-// rests fill the embedding): only the slip sequence can make it chaotic.
-RegimeEvidence stick_slip_without_divergence() {
-  RegimeEvidence e;
-  e.samples = 10000;
-  e.range = 1.0;
-  e.last_half_std = 0.3;
-  e.rest_intervals = 40;
-  e.rest_share = 0.3;
-  e.lyapunov_found = false;
-  e.zero_one_run = true;
-  e.zero_one_K = e.zero_one_q25 = e.zero_one_q75 = 0.99;
-  e.prediction_computed = true;
-  e.prediction_nonlinear = 0.2;
-  e.prediction_linear = 1.0;
-  return e;
-}
-
-TEST(Regime, ChaoticSlipSequenceDecidesOnlyWithoutADivergenceRegion) {
-  RegimeEvidence e = stick_slip_without_divergence();
-  double x = 0.3;
-  std::vector<double> logistic(60);
-  for (double& s : logistic) s = x = 4.0 * x * (1.0 - x);
-  e.slips = slip_sequence_test(logistic);
-  ASSERT_TRUE(e.slips.chaotic);
-  const Verdict chaotic = decide_regime(e);
-  EXPECT_EQ(chaotic.regime, Regime::kChaotic);
-  EXPECT_TRUE(chaotic.chaotic);
-  EXPECT_TRUE(chaotic.stick_slip);
-  // With a divergence region the curve decides (here: not above 3 sigma), not the slips.
-  e.lyapunov_found = true;
-  e.lyapunov_per_s = 0.5;
-  e.lyapunov_slope_uncertainty_per_s = 0.5;
-  EXPECT_EQ(decide_regime(e).regime, Regime::kStickSlip);
-  // Without rests there are no slips to speak of.
-  e = stick_slip_without_divergence();
-  e.slips = slip_sequence_test(logistic);
-  e.rest_intervals = 0;
-  e.rest_share = 0.0;
-  EXPECT_FALSE(decide_regime(e).chaotic);
-  // Too few slips: the test says so and the record stays stick-slip.
-  e = stick_slip_without_divergence();
-  e.slips = slip_sequence_test(std::span<const double>(logistic).first(12));
-  const Verdict few = decide_regime(e);
-  EXPECT_EQ(few.regime, Regime::kStickSlip);
-  bool said = false;
-  for (const std::string& line : few.evidence) {
-    said = said || line.find("slip sequence: not run: 12 slips") != std::string::npos;
-  }
-  EXPECT_TRUE(said);
-}
-
-TEST(Regime, SlipSequenceOfRecordsWithManySlips) {
-  // Short slips (the slips() generator scaled down: rest 40 samples, slip 60 .. 120), ~75 in
-  // 10,000 samples. Logistic slips: chaotic (by the divergence curve or the slips); period 2
-  // and i.i.d. slips: not chaotic, whatever route the verdict takes.
-  const auto record = [](auto size) {
-    std::vector<double> v;
-    for (std::size_t k = 0; v.size() < 10000; ++k) {
-      const double s = size(k);
-      v.insert(v.end(), 40, 0.0);
-      const auto len = static_cast<std::size_t>(std::lround(60.0 + 60.0 * s));
-      for (std::size_t i = 0; i < len; ++i) {
-        v.push_back((0.05 + 0.1 * s) * std::sin(std::numbers::pi * static_cast<double>(i) /
-                                                static_cast<double>(len)));
-      }
-    }
-    v.resize(10000);
-    return analyze_series(v, 1000.0);
-  };
-  double x = 0.3;
-  const AnalysisResult c = record([&x](std::size_t) { return x = 4.0 * x * (1.0 - x); });
-  EXPECT_TRUE(c.verdict.stick_slip);
-  EXPECT_TRUE(c.verdict.chaotic);
-  EXPECT_TRUE(c.evidence.slips.run);
-  EXPECT_TRUE(c.evidence.slips.chaotic);
-  const AnalysisResult p = record([](std::size_t k) { return k % 2 == 0 ? 0.2 : 0.9; });
-  EXPECT_EQ(p.verdict.regime, Regime::kStickSlip);
-  EXPECT_TRUE(p.evidence.slips.repeats);
-  std::uint64_t state = 12345;
-  const AnalysisResult n = record([&state](std::size_t) {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;  // Knuth's MMIX LCG
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  });
-  EXPECT_TRUE(n.verdict.stick_slip);
-  EXPECT_FALSE(n.evidence.slips.chaotic);
-  EXPECT_FALSE(n.verdict.chaotic);
 }
 
 TEST(Regime, TooShortOrNonFiniteSeriesIsAnError) {

@@ -77,32 +77,6 @@ nlohmann::json repetition_json(const AnalysisResult& r) {
           {"method", "RMS of x(t + L) - x(t) relative to sqrt(2) std, per one-period window"}};
 }
 
-// The slips' own sequence (chaos between rests); numbers null when not run.
-nlohmann::json slip_sequence_json(const AnalysisResult& r) {
-  const SlipSequenceTest& t = r.evidence.slips;
-  const auto value = [&](double v, const char* unit) { return quantity(t.run ? v : NAN, unit); };
-  const bool judged = t.run && t.varies;  // alike slips: prediction and repetition not computed
-  const auto judged_value = [&](double v) { return quantity(judged ? v : NAN, "-"); };
-  return {{"run", t.run},
-          {"reason", t.reason},
-          {"slips", t.slips},
-          {"mean_displacement", value(t.mean, "[x] s")},
-          {"variation", value(t.variation, "-")},
-          {"varies", t.varies},
-          {"prediction_error", judged_value(t.prediction_error)},
-          {"dimension", t.dimension},
-          {"surrogate_median", judged_value(t.surrogate_median)},
-          {"surrogate_min", judged_value(t.surrogate_min)},
-          {"surrogates_below", t.surrogates_below},
-          {"deterministic", t.deterministic},
-          {"repeat_lag", t.repeat_lag},
-          {"repeat_mismatch", judged_value(t.repeat_mismatch)},
-          {"repeats", t.repeats},
-          {"chaotic", t.chaotic},
-          {"method", "displacement per slip; leave-one-out local-constant return-map prediction "
-                     "against IAAFT surrogates of the sequence; RMS of s(n + L) - s(n)"}};
-}
-
 std::string evidence_summary(const AnalysisResult& r) {
   const ZeroOneResult& z = r.zero_one;
   std::string out = z.run ? fmt::format("0-1 test: K = {:.3f} (quartiles {:.3f} .. {:.3f}), "
@@ -125,13 +99,6 @@ std::string evidence_summary(const AnalysisResult& r) {
                              "size (whole overlap), small over {:.0f} % of the record\n",
                              s.lag_s, s.mismatch, 100.0 * s.share)
                : fmt::format("self-repetition: {}\n", s.reason);
-  const SlipSequenceTest& q = r.evidence.slips;
-  out += q.run ? fmt::format("slip sequence: {} slips, variation {:.3g}, return-map prediction "
-                             "error {:.3g} (surrogates' median {:.3g}), repeat mismatch {:.3g}: "
-                             "{}\n",
-                             q.slips, q.variation, q.prediction_error, q.surrogate_median,
-                             q.repeat_mismatch, q.chaotic ? "chaotic" : "not chaotic")
-               : fmt::format("slip sequence: {}\n", q.reason);
   return out;
 }
 
@@ -260,7 +227,6 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["surrogate"] = surrogate_json(r);
   j["prediction"] = prediction_json(r);
   j["self_repetition"] = repetition_json(r);
-  j["slip_sequence"] = slip_sequence_json(r);
   j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},

@@ -11,12 +11,35 @@
 namespace pneumachaos {
 namespace {
 
-// Rest statistics for the stick-slip flag, from the rests the slip sequence also reads.
-void note_rests(const Rests& rests, std::size_t samples, RegimeEvidence& e) {
-  std::size_t at_rest = 0;
-  for (const RestInterval& r : rests.intervals) at_rest += r.last - r.first;
-  e.rest_intervals = rests.intervals.size();
-  e.rest_share = static_cast<double>(at_rest) / static_cast<double>(samples);
+// Rest intervals: runs of at least min_len samples with |x| <= level whose spread stays
+// within level / 2; a smooth passage through zero spreads over the whole band and is no rest.
+void rest_statistics(std::span<const double> x, double level, std::size_t min_len,
+                     RegimeEvidence& e) {
+  std::size_t run = 0, at_rest = 0;
+  double lo = 0.0, hi = 0.0;
+  const auto close_run = [&] {
+    if (run >= min_len) {
+      ++e.rest_intervals;
+      at_rest += run;
+    }
+    run = 0;
+  };
+  for (double v : x) {
+    const bool inside = std::abs(v) <= level;
+    if (inside && run > 0 && std::max(hi, v) - std::min(lo, v) <= 0.5 * level) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      ++run;
+      continue;
+    }
+    close_run();
+    if (inside) {
+      run = 1;
+      lo = hi = v;
+    }
+  }
+  close_run();
+  e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
 }
 
 // The evidence beyond the exponents: the 0-1 test on the record down-sampled, the prediction
@@ -100,7 +123,6 @@ void AnalysisOptions::validate() const {
   zero_one.validate();
   surrogates.validate();
   verdict.repetition.validate();
-  verdict.slips.validate();
 }
 
 namespace {
@@ -120,9 +142,7 @@ void check_record(std::span<const double> x, double rate_Hz) {
 }
 
 // Mean, spread, range and rests: the evidence every record gets, constant or not.
-// Returns the rests (the slip sequence reads them).
-Rests describe_record(std::span<const double> x, const AnalysisOptions& o,
-                      AnalysisResult& r) {
+void describe_record(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
   r.samples = x.size();
   r.mean = mean_of(x);
   r.standard_deviation = standard_deviation(x);
@@ -141,9 +161,7 @@ Rests describe_record(std::span<const double> x, const AnalysisOptions& o,
   const std::span<const double> last = x.subspan(x.size() / 2);
   e.last_half_mean = mean_of(last);
   e.last_half_std = standard_deviation(last);
-  auto rests = find_rests(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples);
-  note_rests(rests, x.size(), e);
-  return rests;
+  rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
 }
 
 // Delay (mutual information), Theiler window, dimension (Cao), unless given.
@@ -191,7 +209,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   o.validate();
   AnalysisResult r;
   r.rate_Hz = rate_Hz;
-  const Rests rests = describe_record(x, o, r);
+  describe_record(x, o, r);
   RegimeEvidence& e = r.evidence;
   if (!(r.standard_deviation > 0.0)) {
     // A constant record: steady by definition; no index is defined.
@@ -217,9 +235,6 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   run_exponents(x, rate_Hz, o, r);
   e.repetition =
       self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
-  SlipSequenceOptions slips = o.verdict.slips;
-  slips.seed = o.seed;
-  e.slips = slip_sequence_test(x, rate_Hz, rests, slips);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));

@@ -15,7 +15,6 @@ struct Criteria {
   bool clearly_regular = false;               ///< 0-1 test: even the upper quartile is low
   bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
   bool persistent = false, concentrated = false, second_line = false;
-  bool chaotic_slips = false;  ///< stick-slip, no linear region, the slip sequence chaotic
 };
 
 class Notes {
@@ -121,36 +120,6 @@ void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& n
   c.noise_like = !e.surrogate_rejected;
 }
 
-// Chaos between rests: where the rests leave the divergence curve without a linear region,
-// the slips' own sequence decides (docs/analysis.md "Slip sequence"). Applies to nothing
-// else: a record with a divergence region is judged by it.
-void note_slips(const RegimeEvidence& e, bool stick_slip, Notes& note, Criteria& c) {
-  const SlipSequenceTest& t = e.slips;
-  if (!stick_slip || e.lyapunov_found) {
-    note.info("slip sequence: not used (it applies to stick-slip without a divergence region)");
-    return;
-  }
-  if (!t.run) {
-    note.info("slip sequence: " + t.reason);
-    return;
-  }
-  if (!t.varies) {
-    note(false, fmt::format("slip sequence: {} slips alike (displacement std {:.3g} of the "
-                            "mean): regular",
-                            t.slips, t.variation));
-    return;
-  }
-  c.chaotic_slips = note(
-      t.chaotic,
-      fmt::format("slip sequence chaotic: {} slips varying by {:.3g}; return map (dimension {}) "
-                  "predicts the next slip to {:.3g} std, {} of the surrogates as well, their "
-                  "median {:.3g} (deterministic: {}); smallest repeat mismatch {:.3g} at lag {} "
-                  "(repeats: {})",
-                  t.slips, t.variation, t.dimension, t.prediction_error, t.surrogates_below,
-                  t.surrogate_median, t.deterministic ? "yes" : "no", t.repeat_mismatch,
-                  t.repeat_lag, t.repeats ? "yes" : "no"));
-}
-
 void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
                      Criteria& c) {
   c.persistent = note(e.late_acf >= o.periodic_min_late_acf,
@@ -170,8 +139,7 @@ void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
 }
 
 Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run) {
-  const bool chaotic =
-      (!c.steady && c.positive && c.deterministic && !c.clearly_regular) || c.chaotic_slips;
+  const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
   // concentrated spectrum and a persisting autocorrelation must both say so.
   const bool regular = !c.steady && !c.positive &&
@@ -208,23 +176,17 @@ const char* regime_name(Regime r) {
   return "?";
 }
 
-std::string verdict_rule(const VerdictOptions& o) {
-  return fmt::format(
-      "exponential divergence = the divergence curve rises above 3 sigma AND NOT the record "
+std::string verdict_rule(const VerdictOptions&) {
+  return "exponential divergence = the divergence curve rises above 3 sigma AND NOT the record "
          "repeats itself (a small mismatch at one lag over most of the record, growing slower "
          "than that rise); deterministic = more predictable than every surrogate (where run; "
          "else prediction ratio low); chaotic = exponential divergence AND deterministic AND "
-         "NOT (0-1 K's upper quartile low, where run), or, on a stick-slip record whose divergence "
-         "curve has no linear region, the slips' sequence deterministic (return map beats every "
-         "surrogate, error <= {} x their median), varying by > {} and not repeating, >= {} slips; "
-         "else stick-slip "
-         "if flagged; else "
+         "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged; else "
          "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
          "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
          "incommensurate line, periodic without; else stochastic = NOT deterministic AND "
          "(surrogates keep the linear null, where run) AND 0-1 K high (the test must have run); "
-         "else undetermined",
-      o.slips.max_error_ratio, o.slips.min_variation, o.slips.min_slips);
+         "else undetermined";
 }
 
 bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
@@ -255,7 +217,6 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     note_zero_one(e, o, note, c);
     note_determinism(e, o, note, c);
     note_regularity(e, o, note, c);
-    note_slips(e, v.stick_slip, note, c);
   }
   v.regime = combine(c, v, e.zero_one_run);
   v.chaotic = v.regime == Regime::kChaotic;

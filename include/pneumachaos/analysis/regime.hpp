@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "pneumachaos/analysis/self_repetition.hpp"
-#include "pneumachaos/analysis/slip_sequence.hpp"
 
 namespace pneumachaos {
 
@@ -58,9 +57,6 @@ struct VerdictOptions {
   /// Self-repetition veto: a record that repeats itself at one lag over most of its length,
   /// with a mismatch that does not grow at the claimed rate, has no exponential divergence.
   SelfRepetitionOptions repetition;
-  /// Chaos between rests: on a stick-slip record whose divergence curve has no linear region
-  /// (the rests fill the embedding), the slips' own sequence may show it (slip_sequence.hpp).
-  SlipSequenceOptions slips;
 };
 
 /// The numbers the verdict reads (computed by analyze_series).
@@ -88,7 +84,6 @@ struct RegimeEvidence {
   double second_line_power = 0.0, second_line_ratio = 0.0;
   bool second_line_incommensurate = false;
   SelfRepetition repetition;  ///< computed with VerdictOptions::repetition
-  SlipSequenceTest slips;      ///< computed with VerdictOptions::slips
 };
 
 struct Verdict {
