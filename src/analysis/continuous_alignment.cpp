@@ -107,9 +107,8 @@ double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j) {
   const bool inside = j >= 2 && last + 4 <= e.series().size();
   double s = 0.0;
   for (int iteration = 0; iteration < 2; ++iteration) {
-    const NewtonSums n = iteration == 0 && inside
-                             ? newton_sums_at_sample(e, i, j)
-                             : newton_sums(e, i, static_cast<double>(j) + s);
+    const NewtonSums n = iteration == 0 && inside ? newton_sums_at_sample(e, i, j)
+                                                  : newton_sums(e, i, static_cast<double>(j) + s);
     if (n.den <= 0.0) break;
     s = std::clamp(s - n.num / n.den, -1.0, 1.0);
   }

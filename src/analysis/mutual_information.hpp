@@ -24,10 +24,10 @@ class LaggedMutualInformation {
   [[nodiscard]] double c_log_c(std::uint32_t c) const { return table_[c]; }
 
   std::size_t bins_;
-  std::vector<std::uint32_t> bin_;    ///< bin of every sample
-  std::vector<std::uint32_t> total_;  ///< samples per bin over the whole record
-  std::vector<double> table_;         ///< c ln c for c = 0 .. the largest bin's count
-  std::vector<std::uint32_t> joint_;  ///< kCopies interleaved pair histograms (scratch)
+  std::vector<std::uint32_t> bin_;     ///< bin of every sample
+  std::vector<std::uint32_t> total_;   ///< samples per bin over the whole record
+  std::vector<double> table_;          ///< c ln c for c = 0 .. the largest bin's count
+  std::vector<std::uint32_t> joint_;   ///< kCopies interleaved pair histograms (scratch)
   std::vector<std::uint32_t> margin_;  ///< one marginal's counts (scratch)
 };
 
