@@ -5,7 +5,11 @@
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <random>
 
@@ -13,6 +17,7 @@
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/log_array.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/csv_reader.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace {
@@ -74,6 +79,24 @@ void BM_AnalyzeSweepRecords(benchmark::State& state) {
       }
     }
   }
+}
+
+// Reading a record as `analyze` does (read_csv_series): 1e4 samples of Lorenz x written as
+// bench/write_series writes them (t with 6 decimals, x with 17 digits), from a file.
+void BM_ReadCsv(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  const auto path = std::filesystem::temp_directory_path() / "pneumachaos_bench_read.csv";
+  {
+    std::ofstream out(path);
+    out << "t,v\n";
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      out << fmt::format("{:.6f},{:.17g}\n", 0.01 * static_cast<double>(i), x[i]);
+    }
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(read_csv_series(path.string(), {}).size());
+  }
+  std::filesystem::remove(path);
 }
 
 // The estimators alone, on the embedding the analysis chooses for this record.
@@ -145,6 +168,7 @@ void BM_LogArray(benchmark::State& state) {
 }
 
 BENCHMARK(BM_AnalyzeAll)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReadCsv)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeSweepRecords)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeWithSurrogates)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
