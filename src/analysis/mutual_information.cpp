@@ -32,8 +32,8 @@ std::vector<std::uint32_t> rank_bins(std::span<const double> x, std::size_t bins
 }  // namespace
 
 // No count exceeds the largest bin's count over the whole record, so the table of c ln c up
-// to it (about N / bins entries) serves every cell and marginal at every lag: one logarithm
-// per entry instead of one per histogram cell per lag.
+// to it (about N / bins entries; more where ties fill one bin) serves every cell and marginal
+// at every lag: one logarithm per entry instead of one per histogram cell per lag.
 LaggedMutualInformation::LaggedMutualInformation(std::span<const double> x, std::size_t bins)
     : bins_(bins),
       bin_(rank_bins(x, bins)),
