@@ -40,8 +40,8 @@ TEST(CsvReader, ReadsAColumnByNameWithTimeOrRate) {
 }
 
 // A file is read whole into memory at its size: the same series as the text parsed directly
-// (a byte-order mark, CRLF ends, a comment, a last line without '\n'), an empty file and a
-// missing one named in the error.
+// (a byte-order mark, CRLF ends, a comment, a last line without '\n'); an empty file, a
+// directory and a missing file named in the error.
 TEST(CsvReader, AFileReadsAsItsText) {
   const std::string text = "\xEF\xBB\xBFt,v\r\n# comment\r\n0,1.5\r\n0.01,-2\r\n0.02,3e-3";
   const auto dir = std::filesystem::temp_directory_path() /
@@ -59,6 +59,12 @@ TEST(CsvReader, AFileReadsAsItsText) {
   try {
     read_csv_series(path, {});
     ADD_FAILURE() << "an empty file was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
+  }
+  try {
+    read_csv_series(dir.string(), {});  // a directory reads as nothing
+    ADD_FAILURE() << "a directory was read";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
   }

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -192,16 +193,16 @@ double rate_from_times(const std::vector<double>& times, const std::string& orig
 
 // The file's bytes in one string of its size, read at once: a string stream grows by
 // doubling and is copied out, and the fresh pages of every copy cost as much as parsing
-// (docs/performance.md "Analysis (fourth round)"). A file whose size cannot be told (a
-// pipe) is read to its end in chunks.
-std::string whole_file(std::ifstream& in) {
+// (docs/performance.md "Analysis (fourth round)"). Anything but a regular file (a pipe; a
+// directory, whose "size" can be anything) is read to its end in chunks.
+std::string whole_file(const std::string& path, std::ifstream& in) {
+  std::error_code ec;
+  const std::uintmax_t size =
+      std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
   std::string text;
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size > 0 && in) {
+  if (!ec && size > 0) {
     text.resize(static_cast<std::size_t>(size));
-    in.read(text.data(), size);
+    in.read(text.data(), static_cast<std::streamsize>(size));
     text.resize(static_cast<std::size_t>(in.gcount()));
   }
   in.clear();
@@ -264,7 +265,7 @@ TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& opti
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the file");
-  return parse_csv_series(whole_file(in), path, options);
+  return parse_csv_series(whole_file(path, in), path, options);
 }
 
 }  // namespace pneumachaos
