@@ -5,13 +5,20 @@
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <random>
 
 #include "../tests/reference_series.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/log_array.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/csv_reader.hpp"
+#include "pneumachaos/sweep/sweep.hpp"
 
 namespace {
 
@@ -35,6 +42,61 @@ void BM_AnalyzeWithSurrogates(benchmark::State& state) {
   AnalysisOptions o;
   o.surrogates.count = 39;
   for (auto _ : state) benchmark::DoNotOptimize(analyze_series(x, 100.0, o).verdict.chaotic);
+}
+
+// The records of a textured sweep of the default rig (30 points: S1 2.45..3.70 mm^2 x S2
+// 0.05..0.65 mm^2, the map's seal variation and bore texture): stick-slip, periodic and
+// chaotic records and short ones ending at the stroke end, simulated once. Each is analysed
+// as the sweep analyses it (judge_run: no Wolf, no surrogates); the figure is for all 30.
+const std::vector<SweepRun>& sweep_records() {
+  static const std::vector<SweepRun> runs = [] {
+    SweepSpec spec;
+    spec.base = default_scenario();
+    spec.base.variation.friction_rel_sd = 0.03;
+    spec.base.variation.texture_rel = 0.02;
+    spec.axes = {parse_grid_axis("circuit.S1_mm2=2.45:3.70:0.25"),
+                 parse_grid_axis("circuit.S2_mm2=0.05:0.65:0.15")};
+    spec.repeats = 1;
+    std::vector<SweepRun> out;
+    for (std::size_t p = 0; p < spec.points(); ++p) out.push_back(simulate_run(spec, p, 0));
+    return out;
+  }();
+  return runs;
+}
+
+void BM_AnalyzeSweepRecords(benchmark::State& state) {
+  const std::vector<SweepRun>& runs = sweep_records();
+  AnalysisOptions o;
+  o.wolf = false;
+  for (auto _ : state) {
+    for (const SweepRun& run : runs) {
+      if (!run.sim.summary.ok()) continue;
+      try {
+        benchmark::DoNotOptimize(
+            analyze_series(run.measured_v, run.sim.series.rate_Hz(), o).verdict.chaotic);
+      } catch (const Error&) {
+        // too short to judge, as judge_run catches it
+      }
+    }
+  }
+}
+
+// Reading a record as `analyze` does (read_csv_series): 1e4 samples of Lorenz x written as
+// bench/write_series writes them (t with 6 decimals, x with 17 digits), from a file.
+void BM_ReadCsv(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  const auto path = std::filesystem::temp_directory_path() / "pneumachaos_bench_read.csv";
+  {
+    std::ofstream out(path);
+    out << "t,v\n";
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      out << fmt::format("{:.6f},{:.17g}\n", 0.01 * static_cast<double>(i), x[i]);
+    }
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(read_csv_series(path.string(), {}).size());
+  }
+  std::filesystem::remove(path);
 }
 
 // The estimators alone, on the embedding the analysis chooses for this record.
@@ -106,6 +168,8 @@ void BM_LogArray(benchmark::State& state) {
 }
 
 BENCHMARK(BM_AnalyzeAll)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReadCsv)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnalyzeSweepRecords)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeWithSurrogates)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wolf)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);

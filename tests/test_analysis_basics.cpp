@@ -183,6 +183,62 @@ TEST(Embedding, ExactRepeatsAreSkipped) {
   }
 }
 
+// Known answers of the plug-in estimate with two bins: a series alternating 0, 1 (64
+// samples) at lag 2 pairs every value with itself (31 + 31 pairs: I = ln 2 exactly); at lag 1
+// with the other value (32 pairs (0, 1), 31 pairs (1, 0): I = the entropy of {32, 31} / 63).
+TEST(MutualInformation, AlternatingSeriesKnownValues) {
+  std::vector<double> x(64);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i % 2);
+  const std::vector<double> I = mutual_information(x, 2, 2);
+  const double p = 32.0 / 63.0, q = 31.0 / 63.0;
+  EXPECT_NEAR(I[0], std::log(2.0), 1e-14);
+  EXPECT_NEAR(I[1], -p * std::log(p) - q * std::log(q), 1e-14);
+  EXPECT_NEAR(I[2], std::log(2.0), 1e-14);
+}
+
+// The definition, one logarithm per cell (what the analysis computed before it counted in
+// integers), on a record with long runs of one value (a stick-slip-like rest at 0 between
+// noisy slips) and quantised values, so that bins hold ties and one cell most pairs.
+TEST(MutualInformation, MatchesTheDefinitionOnARecordWithRests) {
+  std::vector<double> x(6000);
+  std::uint64_t state = 12345;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = static_cast<double>(state >> 11) * 0x1p-53;
+    const bool slipping = (i / 150) % 3 == 0;
+    x[i] = slipping ? std::round(100.0 * (std::sin(0.05 * i) + 0.3 * u)) / 100.0 : 0.0;
+  }
+  const std::size_t bins = 24, max_lag = 400;
+  const std::vector<double> I = mutual_information(x, max_lag, bins);
+  // Bins as documented: rank * bins / N, ties taking the bin of the first of equal values.
+  std::vector<std::size_t> order(x.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return x[a] < x[b]; });
+  std::vector<std::size_t> bin(x.size());
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    bin[order[r]] = r > 0 && x[order[r]] == x[order[r - 1]] ? bin[order[r - 1]]
+                                                             : r * bins / order.size();
+  }
+  for (const std::size_t lag : {0u, 1u, 7u, 150u, 399u, 400u}) {
+    const std::size_t n = x.size() - lag;
+    std::vector<double> joint(bins * bins, 0.0), pa(bins, 0.0), pb(bins, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      joint[bin[i] * bins + bin[i + lag]] += 1.0;
+      pa[bin[i]] += 1.0;
+      pb[bin[i + lag]] += 1.0;
+    }
+    double expected = 0.0;
+    for (std::size_t a = 0; a < bins; ++a) {
+      for (std::size_t b = 0; b < bins; ++b) {
+        const double c = joint[a * bins + b];
+        if (c > 0.0) expected += c / n * std::log(c * n / (pa[a] * pb[b]));
+      }
+    }
+    EXPECT_NEAR(I[lag], expected, 1e-12 * std::max(1.0, expected)) << "lag " << lag;
+  }
+  EXPECT_GT(I[0], 1.0);  // the record is far from constant: the check above is not vacuous
+}
+
 TEST(EmbeddingParameters, TextbookDelaysAndDimensions) {
   // Lorenz x at dt = 0.01: first AMI minimum near 0.15-0.2 time units (Fraser & Swinney
   // 1986 give ~0.16), dimension 3; Henon: delay 1, dimension 2.

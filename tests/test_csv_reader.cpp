@@ -1,5 +1,11 @@
 // Time-series input: every bad case names file, line and column.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_fields.hpp"
@@ -31,6 +37,45 @@ TEST(CsvReader, ReadsAColumnByNameWithTimeOrRate) {
   const auto r = parse_csv_series("speed\r\n1\r\n2\r\n\r\n", "rec.csv", o);
   EXPECT_EQ(r.size(), 2u);
   EXPECT_EQ(r.rate_Hz(), 500.0);
+}
+
+// A file is read whole into memory at its size: the same series as the text parsed directly
+// (a byte-order mark, CRLF ends, a comment, a last line without '\n'); an empty file, a
+// directory and a missing file named in the error.
+TEST(CsvReader, AFileReadsAsItsText) {
+  const std::string text = "\xEF\xBB\xBFt,v\r\n# comment\r\n0,1.5\r\n0.01,-2\r\n0.02,3e-3";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("pneumachaos_csv_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "rec.csv").string();
+  std::ofstream(path, std::ios::binary) << text;
+  const TimeSeries from_file = read_csv_series(path, {});
+  const TimeSeries from_text = parse_csv_series(text, path, {});
+  EXPECT_EQ(from_file.channels().front().values, from_text.channels().front().values);
+  EXPECT_EQ(from_file.channels().front().values, (std::vector<double>{1.5, -2.0, 3e-3}));
+  EXPECT_EQ(from_file.rate_Hz(), from_text.rate_Hz());
+  EXPECT_EQ(from_file.start_s(), from_text.start_s());
+  std::ofstream(path, std::ios::binary | std::ios::trunc).flush();
+  try {
+    read_csv_series(path, {});
+    ADD_FAILURE() << "an empty file was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
+  }
+  try {
+    read_csv_series(dir.string(), {});  // a directory reads as nothing
+    ADD_FAILURE() << "a directory was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
+  }
+  try {
+    read_csv_series((dir / "missing.csv").string(), {});
+    ADD_FAILURE() << "a missing file was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot open the file"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CsvReader, ReadsBlankSeparatedColumnsWithOrWithoutAHeader) {

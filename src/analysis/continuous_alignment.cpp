@@ -64,19 +64,53 @@ std::span<const double> shifted_series(std::span<const double> x, std::size_t j,
   return buffer;
 }
 
+namespace {
+
+// One Newton step's sums at the neighbour's time t: the offset moves by -num / den.
+struct NewtonSums {
+  double num = 0.0, den = 0.0;
+};
+
+NewtonSums newton_sums(const DelayEmbedding& e, std::size_t i, double t) {
+  NewtonSums n;
+  for (std::size_t d = 0; d < e.dimension(); ++d) {
+    const double here = coordinate_at(e, t, d);
+    const double tangent = 0.5 * (coordinate_at(e, t + 1.0, d) - coordinate_at(e, t - 1.0, d));
+    n.num += (here - e.coordinate(i, d)) * tangent;
+    n.den += tangent * tangent;
+  }
+  return n;
+}
+
+// The same sums at a whole sample j whose stencils (at j - 1, j, j + 1 in every coordinate)
+// lie inside the record: there the cubic's fractional part is exactly 0 and it returns the
+// sample itself (at most the sign of a zero differs, which no sum below can carry: s starts
+// at +0 and 0 - (+-0) is +0), so the samples are read directly. This is the first of the two
+// steps of every alignment, half of Wolf's candidate placement (docs/performance.md
+// "Analysis (fourth round)").
+NewtonSums newton_sums_at_sample(const DelayEmbedding& e, std::size_t i, std::size_t j) {
+  NewtonSums n;
+  const double* x = e.series().data();
+  for (std::size_t d = 0; d < e.dimension(); ++d) {
+    const std::size_t k = j + d * e.delay();
+    const double tangent = 0.5 * (x[k + 1] - x[k - 1]);
+    n.num += (x[k] - e.coordinate(i, d)) * tangent;
+    n.den += tangent * tangent;
+  }
+  return n;
+}
+
+}  // namespace
+
 double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j) {
+  const std::size_t last = j + (e.dimension() - 1) * e.delay();
+  const bool inside = j >= 2 && last + 4 <= e.series().size();
   double s = 0.0;
   for (int iteration = 0; iteration < 2; ++iteration) {
-    double num = 0.0, den = 0.0;
-    const double t = static_cast<double>(j) + s;
-    for (std::size_t d = 0; d < e.dimension(); ++d) {
-      const double here = coordinate_at(e, t, d);
-      const double tangent = 0.5 * (coordinate_at(e, t + 1.0, d) - coordinate_at(e, t - 1.0, d));
-      num += (here - e.coordinate(i, d)) * tangent;
-      den += tangent * tangent;
-    }
-    if (den <= 0.0) break;
-    s = std::clamp(s - num / den, -1.0, 1.0);
+    const NewtonSums n = iteration == 0 && inside ? newton_sums_at_sample(e, i, j)
+                                                  : newton_sums(e, i, static_cast<double>(j) + s);
+    if (n.den <= 0.0) break;
+    s = std::clamp(s - n.num / n.den, -1.0, 1.0);
   }
   return s;
 }

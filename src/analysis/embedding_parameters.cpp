@@ -8,45 +8,11 @@
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/delay_embedding.hpp"
+#include "mutual_information.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {
-
-// Equiprobable bin of every sample: its rank scaled to [0, bins).
-std::vector<std::size_t> rank_bins(std::span<const double> x, std::size_t bins) {
-  std::vector<std::size_t> order(x.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
-  std::vector<std::size_t> bin(x.size());
-  for (std::size_t r = 0; r < order.size(); ++r) bin[order[r]] = r * bins / order.size();
-  // Ties (quantised data) share one bin: take the bin of the first of equal values.
-  for (std::size_t r = 1; r < order.size(); ++r) {
-    if (x[order[r]] == x[order[r - 1]]) bin[order[r]] = bin[order[r - 1]];
-  }
-  return bin;
-}
-
-double mi_at(const std::vector<std::size_t>& bin, std::size_t bins, std::size_t lag,
-             std::vector<double>& joint) {
-  const std::size_t n = bin.size() - lag;
-  std::fill(joint.begin(), joint.end(), 0.0);
-  std::vector<double> pa(bins, 0.0), pb(bins, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    joint[bin[i] * bins + bin[i + lag]] += 1.0;
-    pa[bin[i]] += 1.0;
-    pb[bin[i + lag]] += 1.0;
-  }
-  double I = 0.0;
-  for (std::size_t a = 0; a < bins; ++a) {
-    for (std::size_t b = 0; b < bins; ++b) {
-      const double p = joint[a * bins + b];
-      if (p > 0.0) I += p / n * std::log(p * n / (pa[a] * pb[b]));
-    }
-  }
-  return I;
-}
 
 std::size_t default_bins(std::size_t n) {
   return std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(n / 10.0)), 8, 64);
@@ -59,10 +25,9 @@ std::vector<double> mutual_information(std::span<const double> x, std::size_t ma
   if (x.size() < 32) throw Error("mutual information", "at least 32 samples are needed");
   if (bins == 0) bins = default_bins(x.size());
   max_lag = std::min(max_lag, x.size() / 2);
-  const auto bin = rank_bins(x, bins);
-  std::vector<double> joint(bins * bins);
+  detail::LaggedMutualInformation mi(x, bins);
   std::vector<double> I(max_lag + 1);
-  for (std::size_t lag = 0; lag <= max_lag; ++lag) I[lag] = mi_at(bin, bins, lag, joint);
+  for (std::size_t lag = 0; lag <= max_lag; ++lag) I[lag] = mi.at(lag);
   return I;
 }
 
@@ -70,14 +35,13 @@ DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag) {
   if (x.size() < 32) throw Error("embedding delay", "at least 32 samples are needed");
   if (max_lag == 0) max_lag = std::max<std::size_t>(8, x.size() / 10);
   const std::size_t bins = default_bins(x.size());
-  const auto bin = rank_bins(x, bins);
-  std::vector<double> joint(bins * bins);
+  detail::LaggedMutualInformation mi(x, bins);
   // Plug-in bias of I for independent data, (B - 1)^2 / (2 N): the level the estimate sinks
   // to once the record has decorrelated.
   const double floor = std::pow(bins - 1.0, 2) / (2.0 * x.size());
   DelayChoice c;
   const auto I = [&](std::size_t lag) {
-    while (c.ami.size() <= lag) c.ami.push_back(mi_at(bin, bins, c.ami.size(), joint));
+    while (c.ami.size() <= lag) c.ami.push_back(mi.at(c.ami.size()));
     return c.ami[lag];
   };
   // Smoothed over +-2 lags: binning makes the estimate jitter from lag to lag.

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -190,6 +191,28 @@ double rate_from_times(const std::vector<double>& times, const std::string& orig
   return static_cast<double>(times.size() - 1) / (times.back() - times.front());
 }
 
+// The file's bytes in one string of its size, read at once: a string stream grows by
+// doubling and is copied out, and the fresh pages of every copy cost as much as parsing
+// (docs/performance.md "Analysis (fourth round)"). Anything but a regular file (a pipe; a
+// directory, whose "size" can be anything) is read to its end in chunks.
+std::string whole_file(const std::string& path, std::ifstream& in) {
+  std::error_code ec;
+  const std::uintmax_t size =
+      std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  std::string text;
+  if (!ec && size > 0) {
+    text.resize(static_cast<std::size_t>(size));
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+  }
+  in.clear();
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
+  return text;
+}
+
 }  // namespace
 
 std::vector<std::string> split_csv_fields(const std::string& line) {
@@ -215,6 +238,11 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
   std::string line;
   const Layout layout = read_layout(lines, line, origin, options);
   Columns c;
+  // At most one sample per line: no regrowth (and fresh pages) while the columns fill.
+  const auto lines_at_most =
+      static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+  c.values.reserve(lines_at_most);
+  if (layout.time >= 0) c.times.reserve(lines_at_most);
   if (!layout.has_header) read_row(line, layout.header_line, layout, origin, c);
   while (lines.next(line)) read_row(line, lines.number(), layout, origin, c);
   if (c.values.size() < 2) {
@@ -225,21 +253,19 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                     timed ? c.times.front() : 0.0);
   const std::string& header = layout.names[static_cast<std::size_t>(layout.value)];
   series.add_channel(layout.has_header ? header_name(header) : header,
-                     layout.has_header ? header_unit(header) : "");
-  for (double v : c.values) series.append(std::span<const double>(&v, 1));
+                     layout.has_header ? header_unit(header) : "", std::move(c.values));
   return series;
 }
 
 TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options) {
-  std::ostringstream text;
   if (path == "-") {
+    std::ostringstream text;
     text << std::cin.rdbuf();
     return parse_csv_series(text.str(), "<stdin>", options);
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the file");
-  text << in.rdbuf();
-  return parse_csv_series(text.str(), path, options);
+  return parse_csv_series(whole_file(path, in), path, options);
 }
 
 }  // namespace pneumachaos

@@ -57,7 +57,7 @@ namespace {
 constexpr std::string_view kBom = "\xEF\xBB\xBF";
 }
 
-CsvLines::CsvLines(const std::string& text)
+CsvLines::CsvLines(std::string_view text)
     : text_(text.starts_with(kBom) ? text.substr(kBom.size()) : text) {}
 
 // Lines as std::getline would cut them (a last line without '\n' counts, a final '\n' opens
@@ -66,7 +66,7 @@ CsvLines::CsvLines(const std::string& text)
 bool CsvLines::next(std::string& line) {
   while (pos_ < text_.size()) {
     const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
-    line.assign(text_, pos_, end - pos_);
+    line.assign(text_.substr(pos_, end - pos_));
     pos_ = end + 1;
     ++number_;
     if (!line.empty() && line.back() == '\r') line.pop_back();

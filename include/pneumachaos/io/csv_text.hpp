@@ -4,6 +4,7 @@
 // column lookup and strict number cells whose errors name file:line:column.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pneumachaos {
@@ -23,15 +24,16 @@ int find_column(const std::vector<std::string>& names, const std::vector<std::st
 double parse_cell(const std::string& field, const std::string& where);
 
 /// The lines of a record, numbered as in the file; a UTF-8 byte-order mark at the start
-/// (spreadsheet exports), blank lines, '#' comments and '\r' line ends skipped.
+/// (spreadsheet exports), blank lines, '#' comments and '\r' line ends skipped. It reads
+/// `text` in place: the text must outlive it.
 class CsvLines {
  public:
-  explicit CsvLines(const std::string& text);
+  explicit CsvLines(std::string_view text);
   bool next(std::string& line);
   [[nodiscard]] std::size_t number() const { return number_; }
 
  private:
-  std::string text_;
+  std::string_view text_;
   std::size_t pos_ = 0;  ///< start of the next line in text_
   std::size_t number_ = 0;
 };
