@@ -107,8 +107,8 @@ double gms_distance_from_limit(const P& p, double g, const double* z, const doub
 /// about r (dr/dt) / (4 |v|) and sits on a falling one.
 inline double gms_limit_deflection(double m, double r, double dr_dt, double speed) {
   if (m > r) return m;
-  const double rise = std::max(dr_dt, 0.0) / speed;
-  return r * std::sqrt(std::sqrt(std::max(1.0 - rise, 0.0)));
+  if (dr_dt <= 0.0) return r;
+  return r * std::sqrt(std::sqrt(std::max(1.0 - dr_dt / speed, 0.0)));
 }
 
 /// Every element's deflection in the limit (as gms_limit_deflection) at level g rising at
