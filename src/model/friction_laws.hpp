@@ -8,13 +8,16 @@
 // struct with the same members holding automatic-differentiation scalars when the friction
 // parameters themselves are fitted (src/identify/friction_fit.cpp).
 //
-// The double instantiation must keep the arithmetic of the hand-written laws it replaced,
-// operation for operation, so that simulations stay bit-identical.
+// The double instantiation kept the arithmetic of the hand-written laws it replaced,
+// operation for operation; since then it reads a textured bore's factor from the Plant's
+// table (texture_table.hpp), within the table's stated bound of the sines.
 
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "pneumachaos/model/friction.hpp"
+#include "texture_table.hpp"
 
 namespace pneumachaos::friction_law {
 
@@ -22,6 +25,13 @@ namespace pneumachaos::friction_law {
 template <typename T, typename P>
 T texture_factor(const P& p, const T& position_m) {
   using std::sin;
+  // The Plant's table serves the double evaluations; the automatic-differentiation ones (the
+  // Jacobian, the friction fits) take the sines, which differ by the table's bound at most.
+  if constexpr (std::is_same_v<T, double> && std::is_same_v<P, FrictionParams>) {
+    if (p.texture_table) {
+      if (const std::optional<double> f = p.texture_table->at(position_m)) return *f;
+    }
+  }
   T f(1.0);
   for (const TextureMode& m : p.texture)
     f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);

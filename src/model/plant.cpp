@@ -75,7 +75,13 @@ Plant::Plant(const Scenario& scenario)
     layout_.T1 = layout_.append("T1", "K");
     layout_.T2 = layout_.append("T2", "K");
   }
-  seal_ = make_friction_model(scenario.friction);
+  // The bore's texture is tabulated over the stroke and a margin either side (the guide's
+  // load follows the piston through the mount); beyond it the sines are evaluated.
+  constexpr double kTextureMargin_m = 0.05;
+  const auto tabulated = [&](const FrictionParams& p) {
+    return with_texture_table(p, -kTextureMargin_m, geometry_.stroke_m + kTextureMargin_m);
+  };
+  seal_ = make_friction_model(tabulated(scenario.friction));
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
     layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), layout_.seal_z_count);
@@ -84,7 +90,7 @@ Plant::Plant(const Scenario& scenario)
   piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
   if (spring) {
     contacts_ = 2;
-    guide_ = make_friction_model(load_.guide_friction);
+    guide_ = make_friction_model(tabulated(load_.guide_friction));
     layout_.load_x = layout_.append("x_load", "m");
     layout_.load_v = layout_.append("v_load", "m/s");
     if (guide_->state_count() > 0) {

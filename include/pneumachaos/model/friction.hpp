@@ -22,6 +22,8 @@ struct TextureMode {
   double phase = 0.0;
 };
 
+class TextureTable;  // src/model/texture_table.hpp
+
 /// Most elements a GMS seal may have (each is one ODE state).
 inline constexpr int kMaxGmsElements = 10;
 
@@ -41,6 +43,9 @@ struct FrictionParams {
   double static_gain_N_per_Pa = 0.0;
   /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
   std::vector<TextureMode> texture;
+  /// The texture tabulated along the stroke, which the Plant builds for its contacts (an
+  /// evaluation cache: docs/model.md, "Friction"); positions outside it use the sines.
+  std::shared_ptr<const TextureTable> texture_table = nullptr;
   FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
   /// Time constant of the Stribeck drop's lag behind the velocity (memory = kLag).
   double lag_time_s = 0.005;

@@ -1,0 +1,49 @@
+#include "texture_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+namespace pneumachaos {
+
+TextureTable::TextureTable(std::span<const TextureMode> modes, double from_m, double to_m)
+    : from_m_(from_m) {
+  double k_max = 0.0, amplitude_sum = 0.0;
+  for (const TextureMode& m : modes) {
+    k_max = std::max(k_max, std::abs(m.wavenumber_per_m));
+    amplitude_sum += std::abs(m.amplitude);
+  }
+  const double shortest = k_max > 0.0 ? 2.0 * std::numbers::pi / k_max : to_m - from_m;
+  step_m_ = shortest / kNodesPerWavelength;
+  error_bound_ = std::pow(step_m_ * k_max, 4) / 384.0 * amplitude_sum;
+  const auto nodes = static_cast<std::size_t>(std::ceil((to_m - from_m) / step_m_)) + 1;
+  value_.assign(nodes, 1.0);
+  slope_.assign(nodes, 0.0);
+  for (std::size_t j = 0; j < nodes; ++j) {
+    const double x = from_m + static_cast<double>(j) * step_m_;
+    for (const TextureMode& m : modes) {
+      const double phase = m.wavenumber_per_m * x + m.phase;
+      value_[j] += m.amplitude * std::sin(phase);
+      slope_[j] += m.amplitude * m.wavenumber_per_m * std::cos(phase) * step_m_;
+    }
+  }
+}
+
+std::optional<double> TextureTable::at(double position_m) const {
+  const double t = (position_m - from_m_) / step_m_;
+  // The negated comparison also turns a NaN position away.
+  if (!(t >= 0.0 && t < static_cast<double>(value_.size() - 1))) return std::nullopt;
+  const auto j = static_cast<std::size_t>(t);
+  const double u = t - static_cast<double>(j), w = 1.0 - u;
+  // Hermite basis on [0, 1]: (1 + 2u) w^2, u w^2, u^2 (3 - 2u), -u^2 w.
+  return (1.0 + 2.0 * u) * w * w * value_[j] + u * w * w * slope_[j] +
+         u * u * (3.0 - 2.0 * u) * value_[j + 1] - u * u * w * slope_[j + 1];
+}
+
+FrictionParams with_texture_table(FrictionParams p, double from_m, double to_m) {
+  if (!p.texture.empty()) p.texture_table = std::make_shared<const TextureTable>(p.texture, from_m, to_m);
+  return p;
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,45 @@
+#pragma once
+// The bore texture's factor 1 + sum a sin(k x + phase), tabulated along the stroke for
+// evaluation speed (docs/model.md, "Friction"; docs/performance.md, "The texture's sines"):
+// four library sines per contact and evaluation were a fifth of a textured sweep run's time.
+// Private to the model module.
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "pneumachaos/model/friction.hpp"
+
+namespace pneumachaos {
+
+/// Piecewise cubic Hermite interpolant of the texture factor on nodes kNodesPerWavelength per
+/// shortest wavelength, with the exact value and slope at every node. Its error is at most
+/// (h k_max)^4 / 384 * sum |a| (the cubic Hermite bound, h^4 / 384 max |f''''|), which this
+/// spacing makes (2 pi / 128)^4 / 384 * sum |a| = 1.5e-8 * sum |a|: 1e-9 of the friction level
+/// at the sweeps' 2 % texture, a hundred times below the integration's relative tolerance.
+class TextureTable {
+ public:
+  static constexpr int kNodesPerWavelength = 128;
+
+  /// Tabulates `modes` over [from_m, to_m]; positions outside it are not served.
+  TextureTable(std::span<const TextureMode> modes, double from_m, double to_m);
+
+  /// The factor at x, or nothing outside the tabulated range.
+  [[nodiscard]] std::optional<double> at(double position_m) const;
+
+  /// The bound above for these modes (tests/test_friction.cpp checks it).
+  [[nodiscard]] double error_bound() const { return error_bound_; }
+
+ private:
+  double from_m_ = 0.0;
+  double step_m_ = 0.0;
+  double error_bound_ = 0.0;
+  std::vector<double> value_;  ///< factor at each node
+  std::vector<double> slope_;  ///< its derivative times the step, at each node
+};
+
+/// A copy of `p` carrying the table of its texture over [from_m, to_m] (unchanged when it
+/// has no texture).
+FrictionParams with_texture_table(FrictionParams p, double from_m, double to_m);
+
+}  // namespace pneumachaos
