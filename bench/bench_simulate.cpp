@@ -3,7 +3,8 @@
 // the default two-mass virtual rig, plain and as a sweep runs it (textured bore). Each prints
 // its right-hand-side evaluations and steps per run; StepControl compares the step-size
 // controllers in one process (docs/performance.md, "Simulation (second round)"), QuasiStatic
-// LuGre's full bristle equation with its quasi-static limit ("Simulation (third round)").
+// LuGre's full bristle equation with its quasi-static limit ("Simulation (third round)"),
+// GmsQuasiStatic the GMS seal's limit ("Simulation (fourth round: the GMS seal)").
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
 #include <benchmark/benchmark.h>
 
@@ -114,6 +115,20 @@ void BM_VirtualRigQuasiStatic(benchmark::State& state) {
   run_rig(state, s);
 }
 
+// The GMS seal's quasi-static limit (docs/model.md, "Friction"; off by default) off (first
+// argument 0, the full law as the default runs it) and at a threshold of the second argument
+// in 1/s, in one process; third argument S2 in 0.01 mm^2: the fast-sliding points 3.0 and
+// 4.4 mm^2, where it is accurate, and the chaotic default 0.35 mm^2, where it is not
+// (docs/performance.md, "Simulation (fourth round: the GMS seal)").
+void BM_VirtualRigGmsQuasiStatic(benchmark::State& state) {
+  Scenario s = default_scenario();
+  s.circuit.S2_m2 = static_cast<double>(state.range(2)) * 1e-8;
+  s.friction.gms_quasi_static_rate_per_s =
+      state.range(0) == 0 ? 0.0 : static_cast<double>(state.range(1));
+  state.SetLabel(state.range(0) == 0 ? "full law (default)" : "GMS limit (option)");
+  run_rig(state, s);
+}
+
 // The default rig integrated without output, with the default step-size controller
 // (Boost.Odeint's, first argument 0) and Hairer's PI controller (1, tried and not adopted:
 // docs/performance.md), in one process; second argument S2 in 0.01 mm^2 (the chaotic
@@ -145,6 +160,15 @@ BENCHMARK(BM_VirtualRigTextured)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigFastSliding)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigQuasiStatic)
     ->ArgsProduct({{0, 1}, {200, 440}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VirtualRigGmsQuasiStatic)
+    ->Args({0, 0, 300})
+    ->Args({1, 8000, 300})
+    ->Args({0, 0, 440})
+    ->Args({1, 8000, 440})
+    ->Args({0, 0, 35})
+    ->Args({1, 8000, 35})
+    ->Args({1, 16000, 35})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VirtualRigStepControl)
     ->Args({0, 35})

@@ -147,6 +147,49 @@ TEST(FrictionGms, HysteresisLoopAreaIsPositiveAndGrowsWithAmplitude) {
   EXPECT_LT(previous, 4.0 * 500e-6 * 40.0);
 }
 
+// The quasi-static limit's deflection of an element tracking a rising share (docs/model.md,
+// "Friction"): on the loading branch, at a constant speed s with the share r rising at dr/dt,
+// the element settles where it loads as fast as the share rises, (1 - (m/r)^4) s = dr/dt, so
+// m = r (1 - (dr/dt)/s)^(1/4): a lag of about r (dr/dt) / (4 s). The full law, integrated
+// here with a rising pressure term, must settle on that manifold; what is left is the next
+// order, the lag's own growth d(lag)/dt over the loading rate a = 4 s / r, i.e. the lag times
+// (dr/dt) / (a r) (here 1e-3 of it; the limit neglects that term).
+TEST(FrictionGms, ElementTrackingARisingShareSitsOnTheLoadingBranchsSlowManifold) {
+  FrictionParams p = gms_params(1);
+  p.static_N = p.coulomb_N;           // no Stribeck drop: the level moves with the pressure alone
+  p.coulomb_gain_N_per_Pa = 1e-4;     // 100 N/MPa
+  p.static_gain_N_per_Pa = 1e-4;
+  p.gms_stiffness_N_per_m = 1e6;
+  const auto f = make_friction_model(p);
+  const double s = 0.05;              // m/s; the element's loading rate 4 s / r = 1e4 1/s
+  const double gauge_rate = 2e6;      // Pa/s: the level rises at 200 N/s
+  const auto level = [&](double t) { return 20.0 + 1e-4 * gauge_rate * t; };
+  std::vector<double> z{level(0.0) / 1e6};  // starts on its share
+  const auto rate = [&](double t, double zi) {
+    std::vector<double> dz(1);
+    f->force_N({s, gauge_rate * t, 0.0}, 0, std::vector<double>{zi}, dz);
+    return dz[0];
+  };
+  const double h = 1e-7;  // a h = 1e-3: the classical Runge-Kutta error is negligible
+  double t = 0.0;
+  for (int i = 0; i < 50000; ++i, t += h) {  // 5 ms: 50 relaxation times
+    const double k1 = rate(t, z[0]);
+    const double k2 = rate(t + h / 2, z[0] + h / 2 * k1);
+    const double k3 = rate(t + h / 2, z[0] + h / 2 * k2);
+    const double k4 = rate(t + h, z[0] + h * k3);
+    z[0] += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  const double r = level(t) / 1e6;
+  const double dr_dt = 1e-4 * gauge_rate / 1e6;
+  const double manifold = r * std::pow(1.0 - dr_dt / s, 0.25);
+  const double lag = r - manifold;
+  // 2e-8 m: the first-order lag, within the binomial series' next term, 3/8 (dr/dt)/s of it.
+  EXPECT_NEAR(lag, r * dr_dt / (4 * s), 0.375 * dr_dt / s * lag * 1.01);
+  const double second_order = lag * dr_dt / (4 * s / r * r);
+  EXPECT_LT(second_order, 2e-3 * lag);
+  EXPECT_NEAR(z[0], manifold, 2.0 * second_order) << "full law " << z[0] << ", share " << r;
+}
+
 TEST(FrictionGms, KeysRejectBadValuesNamingTheKey) {
   Scenario s;
   apply_setting(s, "friction.model", std::string("gms"), "");
@@ -157,7 +200,8 @@ TEST(FrictionGms, KeysRejectBadValuesNamingTheKey) {
         {"friction.gms_elements", 11.0},
         {"friction.gms_elements", 2.5},
         {"friction.gms_stiffness_N_per_m", 0.0},
-        {"friction.gms_attraction_length_um", -1.0}}) {
+        {"friction.gms_attraction_length_um", -1.0},
+        {"friction.gms_quasi_static_rate", -1.0}}) {
     try {
       apply_setting(s, key, value, "");
       ADD_FAILURE() << key << " = " << value << " accepted";

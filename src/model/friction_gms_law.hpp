@@ -3,6 +3,8 @@
 // "Friction"), written once on the scalar types of friction_laws.hpp, which includes this file
 // after the Stribeck curve it builds on. Private to the model module.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "pneumachaos/model/friction.hpp"
@@ -36,6 +38,13 @@ T gms_slip_weight(T q) {
   return q2 * q2;
 }
 
+/// An element above its share (the level fell below it) is attracted back to it over the
+/// attraction length L: dz/dt = (v r - |v| z) / L.
+template <typename T, typename P>
+T gms_attraction_rate(const P& p, const T& v, const T& speed, const T& z, const T& r) {
+  return (v * r - speed * z) / p.gms_attraction_length_m;
+}
+
 /// Rate of one element's deflection z at slip deflection r: (1 - w) v while it loads up to
 /// its share (the contact's motion, less the slip); above it (the level fell) it is attracted
 /// back by (v r - |v| z) / L over the attraction length L. Both vanish at z = r sgn v and at
@@ -45,7 +54,7 @@ T gms_slip_weight(T q) {
 template <typename T, typename P>
 T gms_element_rate(const P& p, const T& v, const T& speed, double sgn, const T& z, const T& r) {
   const T q = sgn * z / r;
-  if (q > 1.0) return (v * r - speed * z) / p.gms_attraction_length_m;
+  if (q > 1.0) return gms_attraction_rate(p, v, speed, z, r);
   return (1.0 - gms_slip_weight(q)) * v;
 }
 
@@ -65,6 +74,109 @@ T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz, int bran
     elastic += z[i];
   }
   return gms_element_stiffness(p) * elastic + p.viscous_Ns_per_m * v;
+}
+
+// ---- The quasi-static limit of the elements' loading (docs/model.md, "Friction") ----------
+// On a branch (direction d = sgn v) with m_i = d z_i, an element below its share loads at the
+// rate (1 - (m/r)^4) |v|, whose slope at the kink m = r is -4 |v| / r: stiff at speed. In the
+// limit of an infinite loading rate an element at or below its share sits on it, and one above
+// it relaxes exactly as in the full law.
+
+/// The loading rate of the slowest element (the largest share), 4 |v| / r_N, is this
+/// coefficient times |v| / g: the quasi-static switch compares it with its threshold.
+template <typename P>
+double gms_loading_rate_per_speed_over_level(const P& p) {
+  const double last_share = gms_force_share(p.gms_elements - 1, p.gms_elements);
+  return 4.0 * gms_element_stiffness(p) / last_share;
+}
+
+/// How far the elements z are from their deflections `on` in the limit (gms_limit_deflections)
+/// at level g: the largest |z_i - on_i| / r_i, what entering the limit would move them.
+template <typename P>
+double gms_distance_from_limit(const P& p, double g, const double* z, const double* on) {
+  double worst = 0.0;
+  for (int i = 0; i < p.gms_elements; ++i)
+    worst = std::max(worst, std::abs(z[i] - on[i]) / gms_reach_m(p, i, g));
+  return worst;
+}
+
+/// Deflection, in the direction of motion, of an element in the limit, with m its state, r its
+/// share's deflection and dr/dt the share's rate: above its share its own m (the attraction
+/// branch, exact); at or below it the loading branch's slow manifold, where the element loads
+/// as fast as its share rises, (1 - (m/r)^4) |v| = max(dr/dt, 0): it lags a rising share by
+/// about r (dr/dt) / (4 |v|) and sits on a falling one.
+inline double gms_limit_deflection(double m, double r, double dr_dt, double speed) {
+  if (m > r) return m;
+  if (dr_dt <= 0.0) return r;
+  return r * std::sqrt(std::sqrt(std::max(1.0 - dr_dt / speed, 0.0)));
+}
+
+/// Every element's deflection in the limit (as gms_limit_deflection) at level g rising at
+/// dg/dt, on branch `direction`, written signed to `out`.
+template <typename P>
+void gms_limit_deflections(const P& p, double v, double g, double dg_dt, const double* z,
+                           double* out, int direction) {
+  const double d = direction;
+  const double k = gms_element_stiffness(p);
+  for (int i = 0; i < p.gms_elements; ++i) {
+    const double r = gms_reach_m(p, i, g);
+    const double dr_dt = gms_force_share(i, p.gms_elements) * dg_dt / k;
+    out[i] = d * gms_limit_deflection(d * z[i], r, dr_dt, d * v);
+  }
+}
+
+/// How much less than the force with every element at d max(m_i, r_i) (gms_quasi_static_N)
+/// the elements carry in the direction of motion: their lag behind rising shares.
+template <typename P>
+double gms_lag_force_N(const P& p, double v, double g, double dg_dt, const double* z,
+                       int direction) {
+  std::array<double, kMaxGmsElements> on{};
+  gms_limit_deflections(p, v, g, dg_dt, z, on.data(), direction);
+  double lag = 0.0;
+  for (int i = 0; i < p.gms_elements; ++i)
+    lag += std::max(direction * z[i], gms_reach_m(p, i, g)) - direction * on[i];
+  return gms_element_stiffness(p) * lag;
+}
+
+/// Puts every element below its share on it (entering the limit): the state then holds the
+/// share it tracks; the force is unchanged to within the settled condition's bound.
+template <typename P>
+void gms_settle_on_shares(const P& p, double g, double* z, int direction) {
+  for (int i = 0; i < p.gms_elements; ++i)
+    z[i] = direction * std::max(direction * z[i], gms_reach_m(p, i, g));
+}
+
+/// The force with every element at d max(m_i, r_i), F = k sum d max(m_i, r_i) + B v: the
+/// limit's force before the elements' lag (gms_lag_force_N), which needs dv/dt and is the
+/// Plant's to subtract (Plant::track_shares).
+template <typename P>
+double gms_quasi_static_N(const P& p, const FrictionInput& in, const double* z, int direction) {
+  const double d = direction;
+  const double g = stribeck_level_N(p, in, d * in.v_m_per_s, true);
+  double deflection = 0.0;
+  for (int i = 0; i < p.gms_elements; ++i)
+    deflection += d * std::max(d * z[i], gms_reach_m(p, i, g));
+  return gms_element_stiffness(p) * deflection + p.viscous_Ns_per_m * in.v_m_per_s;
+}
+
+/// The elements' rates in the limit, given the level g and its rate of change dg/dt: above
+/// its share an element relaxes by the attraction law; at (or, by rounding, below) it, the
+/// state follows a rising share, dm/dt = dr/dt = share dg/dt / k, and stays put while the
+/// share falls (the element is then above it, on the attraction branch). While it tracks, the
+/// state holds its share and the deflection is gms_limit_deflection's.
+template <typename P>
+void gms_quasi_static_rates(const P& p, double v, double g, double dg_dt, const double* z,
+                            double* dz, int direction) {
+  const double d = direction;
+  const double k = gms_element_stiffness(p);
+  for (int i = 0; i < p.gms_elements; ++i) {
+    const double r = gms_reach_m(p, i, g);
+    if (d * z[i] > r) {
+      dz[i] = gms_attraction_rate(p, v, d * v, z[i], r);
+    } else {
+      dz[i] = d * std::max(gms_force_share(i, p.gms_elements) * dg_dt / k, 0.0);
+    }
+  }
 }
 
 }  // namespace pneumachaos::friction_law

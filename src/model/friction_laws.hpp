@@ -175,12 +175,19 @@ void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
 }
 
 /// The force of whichever model `p.kind` names, while the contact moves; z and dz point to
-/// the model's internal states (none for the stiction models). `quasi_static`: LuGre in its
-/// quasi-static limit.
+/// the model's internal states (none for the stiction models). `quasi_static`: LuGre or GMS
+/// in its quasi-static limit. GMS's rates there need dv/dt and so are the Plant's to write
+/// (Plant::track_shares); the automatic-differentiation instantiation (the Jacobian) keeps
+/// the full law, whose stiff slopes the linearization and Rosenbrock's stepper want.
 template <typename T, typename P>
 T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction, const T* z, T* dz,
                  bool quasi_static = false) {
-  if (quasi_static) return lugre_quasi_static_N(p, in, dz[0], direction);
+  if (quasi_static && p.kind == FrictionKind::kLuGre)
+    return lugre_quasi_static_N(p, in, dz[0], direction);
+  if constexpr (std::is_same_v<T, double>) {
+    if (quasi_static && p.kind == FrictionKind::kGms)
+      return gms_quasi_static_N(p, in, z, direction);
+  }
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
   if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz, direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);

@@ -20,7 +20,14 @@ void set_mode(Mode& m, std::size_t contact, ContactMode c) {
   m.value[contact] = static_cast<std::int8_t>(c);
 }
 
-// An upper bound of LuGre's relaxation rate sigma0 |v| / g from a lower bound of g (its
+// The rate the quasi-static limit is switched on is c |v| / g: LuGre's bristle relaxes at
+// sigma0 |v| / g, the slowest GMS element loads at 4 |v| / r_N (docs/model.md, "Friction").
+double rate_per_speed_over_level(const FrictionParams& p) {
+  if (p.kind == FrictionKind::kGms) return friction_law::gms_loading_rate_per_speed_over_level(p);
+  return p.sigma0_N_per_m;
+}
+
+// An upper bound of that rate c |v| / g from a lower bound of g (its
 // smaller level, the pressure term only where it lowers g, the texture at its deepest), with
 // no exp or sin: the switching function checks it at every step of every run (docs/performance.md).
 double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, int direction) {
@@ -31,7 +38,7 @@ double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, i
                                     p.static_N + p.static_gain_N_per_Pa * gauge);
   const double g_low = level_low * texture_low;
   if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
-  return p.sigma0_N_per_m * direction * in.v_m_per_s / g_low;
+  return rate_per_speed_over_level(p) * direction * in.v_m_per_s / g_low;
 }
 
 }  // namespace
@@ -123,36 +130,58 @@ double Plant::holding_force(std::size_t contact, std::span<const double> x) cons
 }
 
 // Dimensionless, so the two conditions of entry can share one function: the contact enters
-// where both its relaxation rate has reached the threshold and its bristle has settled on the
-// steady state within kSettled (the force the limit drops, sigma0 |z - z0|, is then below
-// kSettled g: a bristle still catching up after a fast start keeps the full equation).
-double Plant::quasi_static_switch(std::size_t contact, ContactMode m,
+// where both its rate has reached the threshold and its internal state has settled within
+// kSettled: LuGre's bristle on its steady state, every GMS element on its share or above it
+// (the force the limit drops on entry, sigma0 |z - z0| or k sum (r_i - m_i), is then below
+// kSettled g: a state still catching up after a fast start keeps the full law).
+double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
                                   std::span<const double> x) const {
   constexpr double kSettled = 1e-4;
+  const ContactMode m = mode_of(mode, contact);
   const FrictionParams& p = friction_of(contact).params();
   const FrictionInput in = friction_input<double>(contact, x);
   const int d = direction_of(m);
-  const double on = p.quasi_static_rate_per_s;
+  const double on = p.quasi_static_threshold();
   // Far from the threshold (most steps) the bound decides the sign alone; it is positive
   // there, as the exact function is, so the switch is located on the exact function.
   if (!quasi_static(m)) {
     const double bound = relaxation_rate_bound(p, in, d);
     if (bound < on) return 1.0 - bound / on;
   }
-  const double d_g = d * friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
-  const double ratio = p.sigma0_N_per_m * in.v_m_per_s / d_g / on;  // rate / threshold
+  const double g = friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
+  const double ratio = rate_per_speed_over_level(p) * d * in.v_m_per_s / g / on;  // rate / threshold
   if (quasi_static(m)) return ratio - 0.5;
-  const double z0 = d_g / p.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
-  const double z = x[contact == kSeal ? layout_.seal_z : layout_.guide_z];
-  return std::max(1.0 - ratio, std::abs(z - z0) / (kSettled * std::abs(z0)) - 1.0);
+  const double* z = x.data() + (contact == kSeal ? layout_.seal_z : layout_.guide_z);
+  if (p.kind == FrictionKind::kGms) {
+    if (ratio < 1.0) return 1.0 - ratio;  // the limit's deflections need a derivative: skip
+    std::array<double, kMaxGmsElements> on{};
+    limit_deflections(contact, mode, x, on.data());
+    return friction_law::gms_distance_from_limit(p, g, z, on.data()) / kSettled - 1.0;
+  }
+  const double z0 = d * g / p.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
+  return std::max(1.0 - ratio, std::abs(*z - z0) / (kSettled * std::abs(z0)) - 1.0);
 }
 
 // On the steady state the full LuGre force equals the quasi-static one (dz/dt = 0 there), so
-// the force is continuous where the contact leaves the limit.
-void Plant::settle_bristle(std::size_t contact, std::span<double> x) const {
+// the force is continuous where the contact leaves the limit. GMS elements enter holding their
+// shares (those above keep their deflection) and leave at the limit's deflections, computed in
+// the limit's mode `quasi` before it is left.
+void Plant::settle_bristle(std::size_t contact, const Mode& quasi, bool entering,
+                           std::span<double> x) const {
+  const FrictionParams& p = friction_of(contact).params();
   const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
-  friction_of(contact).steady_state(friction_input<double>(contact, std::span<const double>(x)),
-                                    x.subspan(z0, 1));
+  const FrictionInput in = friction_input<double>(contact, std::span<const double>(x));
+  if (p.kind != FrictionKind::kGms) {
+    friction_of(contact).steady_state(in, x.subspan(z0, 1));
+  } else if (entering) {
+    const int d = direction_of(mode_of(quasi, contact));
+    const double g = friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
+    friction_law::gms_settle_on_shares(p, g, x.data() + z0, d);
+  } else {
+    std::array<double, kMaxGmsElements> on{};
+    limit_deflections(contact, quasi, x, on.data());
+    std::copy_n(on.begin(), p.gms_elements, x.begin() + static_cast<std::ptrdiff_t>(z0));
+  }
 }
 
 double Plant::head_pressure_rate(std::span<const double> x) const {
@@ -188,8 +217,8 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     }
     const FrictionParams& p = friction_of(c).params();
     if ((m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) &&
-        p.kind == FrictionKind::kLuGre && p.quasi_static_rate_per_s > 0.0)
-      add(EventType::kQuasiEnter, c);  // LuGre's alone: other smooth models have no such limit
+        p.quasi_static_threshold() > 0.0)
+      add(EventType::kQuasiEnter, c);  // LuGre's and GMS's: other models have no such limit
     if (m == ContactMode::kStuck) add(EventType::kBreakaway, c);
     if (m == ContactMode::kAtStop) add(EventType::kStopRelease, c);
     if (c == kSeal && moving(m)) {
@@ -227,7 +256,7 @@ void Plant::event_functions(const Mode& mode, std::span<const double> x, double 
         break;
       case EventType::kQuasiEnter:
       case EventType::kQuasiExit:
-        g[i] = quasi_static_switch(c, mode_of(mode, c), x);
+        g[i] = quasi_static_switch(c, mode, x);
         break;
     }
   }
@@ -292,10 +321,11 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
     case EventType::kQuasiExit: {
       const int d = direction_of(mode_of(mode, c));
       const bool enter = ev.type == EventType::kQuasiEnter;
+      const Mode before = mode;
       set_mode(mode, c,
                enter ? (d > 0 ? ContactMode::kQuasiPos : ContactMode::kQuasiNeg)
                      : (d > 0 ? ContactMode::kSmoothPos : ContactMode::kSmoothNeg));
-      settle_bristle(c, x);
+      settle_bristle(c, enter ? mode : before, enter, x);
       out.kind = EventKind::kModeSwitch;
       break;
     }
@@ -359,7 +389,7 @@ Mode Plant::initial_mode(std::span<const double> x, double /*t*/) const {
 
 PlantOutputs Plant::outputs(const Mode& mode, std::span<const double> x) const {
   PlantOutputs out;
-  std::array<double, 8> scratch{};
+  std::array<double, kMaxGmsElements> scratch{};  // the most internal states of a contact
   const auto reported = [&](std::size_t c) {
     const ContactMode m = mode_of(mode, c);
     const double drive = drive_force<double>(c, x);
@@ -369,7 +399,9 @@ PlantOutputs Plant::outputs(const Mode& mode, std::span<const double> x) const {
       return seal_->has_stiction() ? std::clamp(drive, 0.0, holding_force(c, x))
                                    : holding_force(c, x);
     }
-    return friction_force<double>(c, m, x, std::span<double>(scratch.data(), 4));
+    if (quasi_static(m) && friction_of(c).params().kind == FrictionKind::kGms)
+      return limit_force(c, mode, x);
+    return friction_force<double>(c, m, x, std::span<double>(scratch));
   };
   out.seal_friction_N = reported(kSeal);
   if (contacts_ == 2) out.guide_friction_N = reported(kGuide);

@@ -7,6 +7,8 @@
 // The double instantiation keeps the arithmetic of the hand-written derivative it replaced,
 // operation for operation, so that simulations stay bit-identical.
 
+#include <type_traits>
+
 #include "friction_laws.hpp"
 #include "pneumachaos/model/plant.hpp"
 
@@ -179,6 +181,12 @@ void Plant::evaluate(const Mode& mode, std::span<const T> x, std::span<T> dxdt) 
     if (moving(m)) {
       dxdt[ix] = x[iv];
       dxdt[iv] = (drive_force(contact, x) - friction) / mass;  // eq. (1)
+      // GMS in its quasi-static limit: the elements track their shares, whose rate needs
+      // dv/dt (the Jacobian keeps the full law: friction_laws.hpp, moving_force_N).
+      if constexpr (std::is_same_v<T, double>) {
+        if (quasi_static(m) && friction_of(contact).params().kind == FrictionKind::kGms)
+          track_shares(contact, direction_of(m), mass, x, dxdt);
+      }
     } else {
       // Stuck or at the stop: v held at exactly 0 and x frozen (docs/model.md "Friction").
       dxdt[ix] = T(0.0);

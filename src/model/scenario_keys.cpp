@@ -103,6 +103,11 @@ void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref
       prefix + "gms_attraction_length_um", "um",
       "gms: sliding distance over which a slipping element reaches its share of the level", 1e-6,
       kPositive, [ref](auto& s) -> auto& { return ref(s).gms_attraction_length_m; }));
+  keys.push_back(number(
+      prefix + "gms_quasi_static_rate", "1/s",
+      "gms: loading rate 4 |v| / r of the slowest element above which the elements are taken "
+      "on their shares' slow manifold (0: never; off by default, docs/performance.md)",
+      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).gms_quasi_static_rate_per_s; }));
 }
 
 // The same friction keys serve the piston seal ("friction.") and the load guide

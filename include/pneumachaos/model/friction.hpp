@@ -59,6 +59,16 @@ struct FrictionParams {
   /// bristle is taken on its steady state z = g sgn v / sigma0 (left again below half of it;
   /// docs/model.md, "Friction"); 0: never. The bristle's stiffness bounds an explicit step.
   double quasi_static_rate_per_s = 4000.0;
+  /// GMS in the Plant: the slowest element's loading rate 4 |v| / r_N [1/s] above which the
+  /// elements are taken on their quasi-static limit (docs/model.md, "Friction"); 0: never,
+  /// the default, as the limit moves the chaotic default rig beyond its integration error
+  /// (docs/performance.md, "Simulation (fourth round: the GMS seal)").
+  double gms_quasi_static_rate_per_s = 0.0;
+  /// The threshold of this model's quasi-static limit (0: none).
+  [[nodiscard]] double quasi_static_threshold() const {
+    if (kind == FrictionKind::kGms) return gms_quasi_static_rate_per_s;
+    return kind == FrictionKind::kLuGre ? quasi_static_rate_per_s : 0.0;
+  }
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
   }

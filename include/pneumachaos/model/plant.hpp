@@ -27,8 +27,9 @@ enum class ContactMode : std::int8_t {
   /// step straddles the kink of |v| (docs/model.md, "Friction"; docs/performance.md).
   kSmoothPos = 5,
   kSmoothNeg = 6,
-  /// LuGre moving with v > 0 (v < 0) fast enough that its bristle relaxes far quicker than
-  /// anything else moves: the bristle is taken on its steady state (quasi-static limit,
+  /// LuGre or GMS moving with v > 0 (v < 0) fast enough that its bristle (its elements)
+  /// relaxes far quicker than anything else moves: the bristle is taken on its steady state,
+  /// the elements that reached their shares on them (quasi-static limit,
   /// FrictionParams::quasi_static_rate_per_s; docs/model.md, "Friction").
   kQuasiPos = 7,
   kQuasiNeg = 8,
@@ -110,7 +111,7 @@ class Plant final : public HybridSystem {
     kStopRelease,
     kStopHit,
     kStrokeEnd,
-    kQuasiEnter,  ///< a LuGre contact's relaxation rate rises to its quasi-static threshold
+    kQuasiEnter,  ///< a LuGre (GMS) contact's relaxation (loading) rate rises to its threshold
     kQuasiExit    ///< ... falls to half of it
   };
   struct ActiveEvent {
@@ -157,13 +158,26 @@ class Plant final : public HybridSystem {
   /// The mode of a contact at rest (v = 0) consistent with its forces.
   [[nodiscard]] ContactMode rest_mode(std::size_t contact, std::span<const double> x,
                                       bool at_stop) const;
-  /// The quasi-static limit's switching function of a LuGre contact on its branch, negative
-  /// where it switches: while off, when its relaxation rate is above the threshold and its
-  /// bristle has settled; while on, when the rate falls below half the threshold.
-  [[nodiscard]] double quasi_static_switch(std::size_t contact, ContactMode m,
+  /// The quasi-static limit's switching function of a LuGre or GMS contact on its branch,
+  /// negative where it switches: while off, when its rate is above the threshold and its
+  /// bristle (elements) has settled; while on, when the rate falls below half the threshold.
+  [[nodiscard]] double quasi_static_switch(std::size_t contact, const Mode& mode,
                                            std::span<const double> x) const;
-  /// Puts a LuGre contact's bristle on its steady state (entering or leaving the limit).
-  void settle_bristle(std::size_t contact, std::span<double> x) const;
+  /// Puts a LuGre contact's bristle on its steady state; a GMS contact's elements below their
+  /// shares on them when `entering`, else at their deflections in the limit's mode `quasi`.
+  void settle_bristle(std::size_t contact, const Mode& quasi, bool entering,
+                      std::span<double> x) const;
+  // The GMS quasi-static limit (src/model/plant_gms_limit.cpp, docs/model.md "Friction").
+  /// Writes the elements' rates to dxdt and adds their lag to dv/dt, where the rates of
+  /// everything else (the pressures', dv/dt with every element on max(m, r)) are written.
+  void track_shares(std::size_t contact, int direction, double mass, std::span<const double> x,
+                    std::span<double> dxdt) const;
+  /// The elements' deflections in the limit (signed) in `mode`, where the contact is in it.
+  void limit_deflections(std::size_t contact, const Mode& mode, std::span<const double> x,
+                         double* out) const;
+  /// The contact's friction force in the limit, lag included: drive - mass dv/dt.
+  [[nodiscard]] double limit_force(std::size_t contact, const Mode& mode,
+                                   std::span<const double> x) const;
   [[nodiscard]] const FrictionModel& friction_of(std::size_t contact) const {
     return contact == 0 ? *seal_ : *guide_;
   }
