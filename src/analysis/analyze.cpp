@@ -13,23 +13,18 @@ namespace {
 
 // Rest intervals: runs of at least min_len samples with |x| <= level whose spread stays
 // within level / 2; a smooth passage through zero spreads over the whole band and is no rest.
-// Returns one flag per sample: inside a rest interval.
-std::vector<bool> rest_statistics(std::span<const double> x, double level, std::size_t min_len,
-                                  RegimeEvidence& e) {
-  std::vector<bool> at_rest(x.size(), false);
-  std::size_t run = 0, resting = 0;
+void rest_statistics(std::span<const double> x, double level, std::size_t min_len,
+                     RegimeEvidence& e) {
+  std::size_t run = 0, at_rest = 0;
   double lo = 0.0, hi = 0.0;
-  const auto close_run = [&](std::size_t end) {
+  const auto close_run = [&] {
     if (run >= min_len) {
       ++e.rest_intervals;
-      resting += run;
-      std::fill(at_rest.begin() + static_cast<std::ptrdiff_t>(end - run),
-                at_rest.begin() + static_cast<std::ptrdiff_t>(end), true);
+      at_rest += run;
     }
     run = 0;
   };
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double v = x[i];
+  for (double v : x) {
     const bool inside = std::abs(v) <= level;
     if (inside && run > 0 && std::max(hi, v) - std::min(lo, v) <= 0.5 * level) {
       lo = std::min(lo, v);
@@ -37,15 +32,14 @@ std::vector<bool> rest_statistics(std::span<const double> x, double level, std::
       ++run;
       continue;
     }
-    close_run(i);
+    close_run();
     if (inside) {
       run = 1;
       lo = hi = v;
     }
   }
-  close_run(x.size());
-  e.rest_share = static_cast<double>(resting) / static_cast<double>(x.size());
-  return at_rest;
+  close_run();
+  e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
 }
 
 // The evidence beyond the exponents: the 0-1 test on the record down-sampled, the prediction
@@ -147,9 +141,8 @@ void check_record(std::span<const double> x, double rate_Hz) {
   }
 }
 
-// Mean, spread, range and rests: the evidence every record gets, constant or not. Returns
-// the rest samples.
-std::vector<bool> describe_record(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
+// Mean, spread, range and rests: the evidence every record gets, constant or not.
+void describe_record(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
   r.samples = x.size();
   r.mean = mean_of(x);
   r.standard_deviation = standard_deviation(x);
@@ -168,7 +161,7 @@ std::vector<bool> describe_record(std::span<const double> x, const AnalysisOptio
   const std::span<const double> last = x.subspan(x.size() / 2);
   e.last_half_mean = mean_of(last);
   e.last_half_std = standard_deviation(last);
-  return rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
+  rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
 }
 
 // Delay (mutual information), Theiler window, dimension (Cao), unless given.
@@ -184,28 +177,8 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
 }
 
-// The divergence curve without the excluded samples, or, when too few references are left
-// (every delay vector spans a rest: rests long against (m - 1) x delay), the whole record's.
-DivergenceResult masked_or_whole_curve(std::span<const double> x, double rate_Hz,
-                                       DivergenceOptions& d, std::string& status) {
-  if (!d.excluded_samples.empty()) {
-    try {
-      DivergenceResult masked = divergence_exponent(x, rate_Hz, d);
-      status = "rests left out; ";
-      return masked;
-    } catch (const Error& e) {
-      status = fmt::format("rests not left out ({}); ", e.what());
-      d.excluded_samples.clear();
-    }
-  }
-  return divergence_exponent(x, rate_Hz, d);
-}
-
-// On a stick-slip record the divergence curve leaves the rests out (docs/analysis.md "The
-// divergence curve without its rests"): a velocity at rest says nothing of the pressures that
-// decide the next slip, so rest vectors are neighbours that never separate.
 void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
-                   std::vector<bool> rests, AnalysisResult& r) {
+                   AnalysisResult& r) {
   DivergenceOptions d;
   d.dimension = r.dimension.dimension;
   d.delay = r.delay.delay;
@@ -215,20 +188,13 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   // oscillation the maxima follow, and a linear region can be shorter than one orbit.
   d.slope_spacing =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
-  if (o.verdict.divergence_without_rests && is_stick_slip(r.evidence, o.verdict)) {
-    d.excluded_samples = std::move(rests);
-    d.stop_at_excluded = o.verdict.stop_pairs_at_rests;
-  }
-  r.divergence = masked_or_whole_curve(x, rate_Hz, d, r.divergence_status);
-  r.divergence_status +=
+  r.divergence = divergence_exponent(x, rate_Hz, d);
+  r.divergence_status =
       r.divergence.found_linear_region
           ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
                         r.divergence.fit_last)
           : "no rising linear region: no exponential divergence, or the record is too short";
-  if (o.wolf) {
-    d.excluded_samples.clear();  // Wolf's program does not take the mask
-    run_wolf(x, rate_Hz, d, r);
-  }
+  if (o.wolf) run_wolf(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;
   e.lyapunov_per_s = r.divergence.lambda_per_s;
@@ -243,7 +209,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   o.validate();
   AnalysisResult r;
   r.rate_Hz = rate_Hz;
-  std::vector<bool> rests = describe_record(x, o, r);
+  describe_record(x, o, r);
   RegimeEvidence& e = r.evidence;
   if (!(r.standard_deviation > 0.0)) {
     // A constant record: steady by definition; no index is defined.
@@ -266,7 +232,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
   choose_embedding(x, rate_Hz, o, r);
   run_evidence_tests(x, o, r);
-  run_exponents(x, rate_Hz, o, std::move(rests), r);
+  run_exponents(x, rate_Hz, o, r);
   e.repetition =
       self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "divergence_mask.hpp"
 #include "divergence_uncertainty.hpp"
 #include "pneumachaos/analysis/continuous_alignment.hpp"
 #include "pneumachaos/analysis/linear_region.hpp"
@@ -23,10 +22,6 @@ void DivergenceOptions::validate(std::size_t n) const {
   if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
   if (segments < 2 || segments > jackknife_blocks) {
     throw Error("lyapunov.segments", "must be between 2 and jackknife_blocks");
-  }
-  if (!excluded_samples.empty() && excluded_samples.size() != n) {
-    throw Error("lyapunov.excluded_samples", fmt::format("{} flags for {} samples",
-                                                         excluded_samples.size(), n));
   }
 }
 
@@ -102,19 +97,11 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   const std::size_t blocks = o.jackknife_blocks;
   BlockSums bs{std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0)),
                std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
-  const bool masked = !o.excluded_samples.empty();
-  const std::vector<bool> bad = masked ? detail::excluded_vectors(o.excluded_samples, e)
-                                       : std::vector<bool>{};
   std::vector<std::size_t> references;
-  for (std::size_t i = p.margin; i < p.usable; i += stride) {
-    if (!masked || !bad[i]) references.push_back(i);
-  }
+  for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
   // All neighbours first (searched in the tree's order: docs/performance.md), then the sums
   // in the references' order, so every sum adds the same terms in the same order as before.
-  const std::vector<Neighbour> neighbours =
-      masked ? detail::nearest_allowed(index, references, o.theiler, bad, p.margin, p.usable,
-                                       p.usable)
-             : index.nearest_each(references, o.theiler);
+  const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1), logs(p.K + 1);
   for (std::size_t r = 0; r < references.size(); ++r) {
     const std::size_t i = references[r];
@@ -134,7 +121,6 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
       const double* c = other.data() + d * o.delay;
       for (std::size_t k = 0; k <= p.K; ++k) d2[k] += (a[k] - c[k]) * (a[k] - c[k]);
     }
-    if (masked) detail::mask_pair(d2, bad, i, nb.index, o.stop_at_excluded);
     log_array(d2, logs);  // vectorised: the logarithms were half of the curve's time
     add_log_distances(d2, logs, bs.sum[b], bs.count[b]);
     ++bs.references;

@@ -189,10 +189,6 @@ std::string verdict_rule(const VerdictOptions&) {
          "else undetermined";
 }
 
-bool is_stick_slip(const RegimeEvidence& e, const VerdictOptions& o) {
-  return e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share;
-}
-
 bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
   return e.last_half_std <= o.steady_variation * std::max(std::abs(e.last_half_mean), e.range);
 }
@@ -207,7 +203,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   }
   Criteria c;
   v.stick_slip =
-      note(is_stick_slip(e, o),
+      note(e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share,
            fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x max|x| "
                        "(need {}), {:.1f} % of the time at rest (need {:.1f} %)",
                        e.rest_intervals, o.min_rest_samples, o.rest_fraction, o.min_rest_intervals,

@@ -36,14 +36,6 @@ struct DivergenceOptions {
   /// also fitted separately, each with its own linear region; their spread is part of the
   /// uncertainty (docs/analysis.md "Divergence exponent's uncertainty"). 2..jackknife_blocks.
   std::size_t segments = 5;
-  /// One flag per sample (empty: none): a delay vector holding a flagged sample is neither a
-  /// reference nor a neighbour, and a pair adds nothing at a step where either vector holds
-  /// one; the time axis stays intact (docs/analysis.md "The divergence curve without its
-  /// rests": a stick-slip record's rests carry no state).
-  std::vector<bool> excluded_samples;
-  /// A pair that reaches an excluded vector: false, those steps are skipped and the pair is
-  /// followed on; true, the pair is followed only up to there.
-  bool stop_at_excluded = false;
   void validate(std::size_t n_samples) const;
 };
 

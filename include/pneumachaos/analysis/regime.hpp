@@ -35,12 +35,6 @@ struct VerdictOptions {
   /// ...and together at least this share of the record: stick-slip rests for a good part of
   /// each cycle, while a chaotic record may linger near zero now and then (Lorenz's origin).
   double min_rest_share = 0.02;
-  /// On a record flagged stick-slip, the divergence curve leaves out every delay vector that
-  /// holds a rest sample (docs/analysis.md "The divergence curve without its rests").
-  bool divergence_without_rests = true;
-  /// ...and a pair is followed only up to its first rest (true) or on past it, without the
-  /// steps where either vector holds a rest sample (false).
-  bool stop_pairs_at_rests = false;
   /// Steady: the last half varies (std) by at most this fraction of max(|mean|, range).
   double steady_variation = 0.01;
   /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its slope's
@@ -103,9 +97,6 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o = {});
 
 /// The rule that combines the criteria, in words (printed with every verdict).
 std::string verdict_rule(const VerdictOptions& o = {});
-
-/// The stick-slip flag alone: enough rest intervals and enough time at rest.
-bool is_stick_slip(const RegimeEvidence& e, const VerdictOptions& o = {});
 
 /// The steady criterion alone: a record damped to a constant has no dynamics to embed, so the
 /// analysis stops before the embedding and the Lyapunov estimators.
