@@ -1,9 +1,9 @@
 // The GMS seal's quasi-static limit (friction.gms_quasi_static_rate, docs/model.md "Friction")
-// against the full law integrated at tight tolerances, on the default rig. Off by default:
-// at the chaotic and stick-slip points the elements' shares move too fast for it
-// (docs/performance.md, "Simulation (fourth round: the GMS seal)"); where the contact slides
-// fast it must keep the run within the default tolerances' own error and take the elements'
-// stiffness out of the step.
+// against the full law integrated at tight tolerances, on the default rig. The default
+// scenario turns it on at a threshold its chaotic and stick-slip points never reach: there
+// the elements' shares move too fast for it (docs/performance.md, "Simulation (fourth round:
+// the GMS seal)"); where the contact slides fast it must keep the run within the default
+// tolerances' own error and take the elements' stiffness out of the step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,25 +34,40 @@ Scenario at(double S2_mm2, double limit_per_s) {
   return s;
 }
 
-TEST(GmsQuasiStatic, IsOffByDefault) {
-  EXPECT_EQ(default_scenario().friction.gms_quasi_static_rate_per_s, 0.0);
+// The default threshold is above every loading rate of the chaotic point (S2 0.35 mm^2) and
+// of stick-slip (0.05, 0.20): those runs are the full law's, bit for bit.
+TEST(GmsQuasiStatic, DefaultThresholdLeavesTheChaoticAndStickSlipPointsUntouched) {
+  const double threshold = default_scenario().friction.gms_quasi_static_rate_per_s;
+  EXPECT_GT(threshold, 0.0);
+  for (const double S2_mm2 : {0.05, 0.20, 0.35}) {
+    const Scenario full = at(S2_mm2, 0.0);
+    const auto a = simulate(Plant(full), full.run);
+    const auto b = simulate(Plant(at(S2_mm2, threshold)), full.run);
+    ASSERT_TRUE(a.summary.ok() && b.summary.ok());
+    EXPECT_EQ(a.series.channel("v").values, b.series.channel("v").values) << "S2 " << S2_mm2;
+    EXPECT_EQ(a.summary.rhs_evaluations, b.summary.rhs_evaluations) << "S2 " << S2_mm2;
+  }
 }
 
-// Asked of the limit at 8000 1/s: a velocity error against the tight reference within twice
-// what the full law at the default tolerances makes (1.0e-6 and 3.3e-7 m/s here, 1e-6 of the
-// speed), and fewer than half of its derivative evaluations.
+// Asked of the limit at 8000 1/s and at the default threshold: a velocity error against the
+// tight reference within twice what the full law at the default tolerances makes (1.0e-6 and
+// 3.3e-7 m/s here, 1e-6 of the speed), and fewer than half of its derivative evaluations.
 TEST(GmsQuasiStatic, MatchesTheFullLawWhileSlidingFast) {
+  const double threshold = default_scenario().friction.gms_quasi_static_rate_per_s;
   for (const double S2_mm2 : {3.0, 4.4}) {  // 0.6-0.8 m/s
     const Scenario full = at(S2_mm2, 0.0);
     const auto reference = simulate(Plant(full), tight(2.0));
     const auto full_default = simulate(Plant(full), full.run);
-    const auto limit = simulate(Plant(at(S2_mm2, 8000.0)), full.run);
-    ASSERT_TRUE(reference.summary.ok() && full_default.summary.ok() && limit.summary.ok());
-    EXPECT_LE(largest_velocity_difference(limit, reference),
-              2.0 * largest_velocity_difference(full_default, reference))
-        << "S2 " << S2_mm2;
-    EXPECT_LT(2 * limit.summary.rhs_evaluations, full_default.summary.rhs_evaluations)
-        << "S2 " << S2_mm2;
+    ASSERT_TRUE(reference.summary.ok() && full_default.summary.ok());
+    for (const double limit_per_s : {8000.0, threshold}) {
+      const auto limit = simulate(Plant(at(S2_mm2, limit_per_s)), full.run);
+      ASSERT_TRUE(limit.summary.ok());
+      EXPECT_LE(largest_velocity_difference(limit, reference),
+                2.0 * largest_velocity_difference(full_default, reference))
+          << "S2 " << S2_mm2 << ", limit at " << limit_per_s << " 1/s";
+      EXPECT_LT(2 * limit.summary.rhs_evaluations, full_default.summary.rhs_evaluations)
+          << "S2 " << S2_mm2 << ", limit at " << limit_per_s << " 1/s";
+    }
   }
 }
 
