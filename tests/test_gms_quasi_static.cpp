@@ -16,16 +16,6 @@
 namespace pneumachaos {
 namespace {
 
-double largest_velocity_difference(const SimulationResult& a, const SimulationResult& b) {
-  const auto& va = a.series.channel("v").values;
-  const auto& vb = b.series.channel("v").values;
-  EXPECT_EQ(va.size(), vb.size());
-  double worst = 0.0;
-  for (std::size_t i = 0; i < std::min(va.size(), vb.size()); ++i)
-    worst = std::max(worst, std::abs(va[i] - vb[i]));
-  return worst;
-}
-
 Scenario at(double S2_mm2, double limit_per_s) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = S2_mm2 * 1e-6;

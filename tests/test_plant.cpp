@@ -173,16 +173,6 @@ Scenario without_quasi_static(Scenario s) {
   return s;
 }
 
-double largest_velocity_difference(const SimulationResult& a, const SimulationResult& b) {
-  const auto& va = a.series.channel("v").values;
-  const auto& vb = b.series.channel("v").values;
-  EXPECT_EQ(va.size(), vb.size());
-  double worst = 0.0;
-  for (std::size_t i = 0; i < std::min(va.size(), vb.size()); ++i)
-    worst = std::max(worst, std::abs(va[i] - vb[i]));
-  return worst;
-}
-
 // The LuGre rig (the default before issue 12) at S2 for `seconds`: the full bristle equation
 // at tight tolerances (the reference) and at the default ones, and the rig as it is
 // (quasi-static limit on).

@@ -27,6 +27,12 @@ T gms_reach_m(const P& p, int i, const T& g) {
   return gms_force_share(i, p.gms_elements) * g / gms_element_stiffness(p);
 }
 
+/// Rate of that slip deflection while the level changes at dg/dt.
+template <typename P>
+double gms_share_rate(const P& p, int i, double dg_dt) {
+  return gms_force_share(i, p.gms_elements) * dg_dt / gms_element_stiffness(p);
+}
+
 /// Slip weight of an element at utilisation q (its deflection over its slip deflection, in
 /// the direction of motion): 0 while it is unloaded or loaded against the motion, q^4 on the
 /// way up (nearly elastic until close to breakaway), 1 at its share of the level.
@@ -117,10 +123,9 @@ template <typename P>
 void gms_limit_deflections(const P& p, double v, double g, double dg_dt, const double* z,
                            double* out, int direction) {
   const double d = direction;
-  const double k = gms_element_stiffness(p);
   for (int i = 0; i < p.gms_elements; ++i) {
     const double r = gms_reach_m(p, i, g);
-    const double dr_dt = gms_force_share(i, p.gms_elements) * dg_dt / k;
+    const double dr_dt = gms_share_rate(p, i, dg_dt);
     out[i] = d * gms_limit_deflection(d * z[i], r, dr_dt, d * v);
   }
 }
@@ -168,13 +173,12 @@ template <typename P>
 void gms_quasi_static_rates(const P& p, double v, double g, double dg_dt, const double* z,
                             double* dz, int direction) {
   const double d = direction;
-  const double k = gms_element_stiffness(p);
   for (int i = 0; i < p.gms_elements; ++i) {
     const double r = gms_reach_m(p, i, g);
     if (d * z[i] > r) {
       dz[i] = gms_attraction_rate(p, v, d * v, z[i], r);
     } else {
-      dz[i] = d * std::max(gms_force_share(i, p.gms_elements) * dg_dt / k, 0.0);
+      dz[i] = d * std::max(gms_share_rate(p, i, dg_dt), 0.0);
     }
   }
 }
