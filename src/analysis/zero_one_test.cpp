@@ -59,23 +59,38 @@ std::vector<double> mean_square_displacement(const std::vector<std::complex<doub
   return M;
 }
 
+// e^{i k c} for k = 1 .. count: each from the one before by one rotation, and from the
+// library's sine and cosine every kAnchor steps, so the rounding of the products cannot
+// build up beyond ~kAnchor ulp (1e-14; they were a tenth of a 1e4 analysis as one sine and
+// cosine per sample and frequency: docs/performance.md).
+std::vector<std::complex<double>> unit_phases(std::size_t count, double c) {
+  constexpr std::size_t kAnchor = 64;
+  std::vector<std::complex<double>> e(count);
+  const std::complex<double> step = std::polar(1.0, c);
+  for (std::size_t k = 0; k < count; ++k) {
+    e[k] = k % kAnchor == 0 ? std::polar(1.0, static_cast<double>(k + 1) * c) : e[k - 1] * step;
+  }
+  return e;
+}
+
 // K_c for one frequency c: the walk driven by phi, its mean square displacement minus the
 // oscillatory term of the 2009 paper (eq. 3.4: (E phi)^2 (1 - cos nc) / (1 - cos c)),
 // correlated with n.
 double k_of_c(const std::vector<double>& phi, double mean, double c, const DftPlan& plan) {
   const std::size_t N = phi.size(), ncut = N / 10;
+  const std::vector<std::complex<double>> e = unit_phases(N, c);
   std::vector<std::complex<double>> z(N);
   std::complex<double> walk = 0.0;
   for (std::size_t j = 0; j < N; ++j) {
-    walk += phi[j] * std::polar(1.0, static_cast<double>(j + 1) * c);
+    walk += phi[j] * e[j];
     z[j] = walk;
   }
   const std::vector<double> M = mean_square_displacement(z, ncut, plan);
   std::vector<double> xi(ncut), D(ncut);
+  const double one_minus_cos_c = 1.0 - e[0].real();
   for (std::size_t n = 1; n <= ncut; ++n) {
-    const double nd = static_cast<double>(n);
-    xi[n - 1] = nd;
-    D[n - 1] = M[n - 1] - mean * mean * (1.0 - std::cos(nd * c)) / (1.0 - std::cos(c));
+    xi[n - 1] = static_cast<double>(n);
+    D[n - 1] = M[n - 1] - mean * mean * (1.0 - e[n - 1].real()) / one_minus_cos_c;
   }
   return correlation(xi, D);
 }
