@@ -106,6 +106,13 @@ double gms_distance_from_limit(const P& p, double g, const double* z, const doub
   return worst;
 }
 
+/// An element's deflection in the direction of motion, held at least at its share: d max(m, r)
+/// with m = d z (the limit's force before the elements' lag).
+template <typename P>
+double gms_held_m(const P& p, int i, double g, double z, int direction) {
+  return std::max(direction * z, gms_reach_m(p, i, g));
+}
+
 /// Deflection, in the direction of motion, of an element in the limit, with m its state, r its
 /// share's deflection and dr/dt the share's rate: above its share its own m (the attraction
 /// branch, exact); at or below it the loading branch's slow manifold, where the element loads
@@ -139,7 +146,7 @@ double gms_lag_force_N(const P& p, double v, double g, double dg_dt, const doubl
   gms_limit_deflections(p, v, g, dg_dt, z, on.data(), direction);
   double lag = 0.0;
   for (int i = 0; i < p.gms_elements; ++i)
-    lag += std::max(direction * z[i], gms_reach_m(p, i, g)) - direction * on[i];
+    lag += gms_held_m(p, i, g, z[i], direction) - direction * on[i];
   return gms_element_stiffness(p) * lag;
 }
 
@@ -148,7 +155,7 @@ double gms_lag_force_N(const P& p, double v, double g, double dg_dt, const doubl
 template <typename P>
 void gms_settle_on_shares(const P& p, double g, double* z, int direction) {
   for (int i = 0; i < p.gms_elements; ++i)
-    z[i] = direction * std::max(direction * z[i], gms_reach_m(p, i, g));
+    z[i] = direction * gms_held_m(p, i, g, z[i], direction);
 }
 
 /// The force with every element at d max(m_i, r_i), F = k sum d max(m_i, r_i) + B v: the
@@ -160,7 +167,7 @@ double gms_quasi_static_N(const P& p, const FrictionInput& in, const double* z, 
   const double g = stribeck_level_N(p, in, d * in.v_m_per_s, true);
   double deflection = 0.0;
   for (int i = 0; i < p.gms_elements; ++i)
-    deflection += d * std::max(d * z[i], gms_reach_m(p, i, g));
+    deflection += d * gms_held_m(p, i, g, z[i], direction);
   return gms_element_stiffness(p) * deflection + p.viscous_Ns_per_m * in.v_m_per_s;
 }
 

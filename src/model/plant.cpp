@@ -142,12 +142,6 @@ double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
   const FrictionInput in = friction_input<double>(contact, x);
   const int d = direction_of(m);
   const double on = p.quasi_static_threshold();
-  // Left at a fraction of the threshold (hysteresis). GMS leaves earlier than LuGre: its
-  // first-order lag is poorest where the contact decelerates through the Stribeck drop, and
-  // leaving at 3/4 keeps the start-up's dip at the fast-sliding points in the full law
-  // (docs/performance.md, "Simulation (fourth round: the GMS seal)").
-  const double exit = p.kind == FrictionKind::kGms ? 0.75 : 0.5;
-
   // Far from the threshold (most steps) the bound decides the sign alone; it is positive
   // there, as the exact function is, so the switch is located on the exact function.
   if (!quasi_static(m)) {
@@ -156,7 +150,7 @@ double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
   }
   const double g = friction_law::stribeck_level_N(p, in, d * in.v_m_per_s, true);
   const double ratio = rate_per_speed_over_level(p) * d * in.v_m_per_s / g / on;  // rate / threshold
-  if (quasi_static(m)) return ratio - exit;
+  if (quasi_static(m)) return ratio - p.quasi_static_exit_fraction();
   const double* z = x.data() + (contact == kSeal ? layout_.seal_z : layout_.guide_z);
   if (p.kind == FrictionKind::kGms) {
     if (ratio < 1.0) return 1.0 - ratio;  // the limit's deflections need a derivative: skip

@@ -112,7 +112,7 @@ class Plant final : public HybridSystem {
     kStopHit,
     kStrokeEnd,
     kQuasiEnter,  ///< a LuGre (GMS) contact's relaxation (loading) rate rises to its threshold
-    kQuasiExit    ///< ... falls to half of it
+    kQuasiExit    ///< ... falls to its exit fraction of it (FrictionParams)
   };
   struct ActiveEvent {
     EventType type;
@@ -160,7 +160,8 @@ class Plant final : public HybridSystem {
                                       bool at_stop) const;
   /// The quasi-static limit's switching function of a LuGre or GMS contact on its branch,
   /// negative where it switches: while off, when its rate is above the threshold and its
-  /// bristle (elements) has settled; while on, when the rate falls below half the threshold.
+  /// bristle (elements) has settled; while on, when the rate falls below the threshold's exit
+  /// fraction (FrictionParams::quasi_static_exit_fraction).
   [[nodiscard]] double quasi_static_switch(std::size_t contact, const Mode& mode,
                                            std::span<const double> x) const;
   /// Puts a LuGre contact's bristle on its steady state; a GMS contact's elements below their
