@@ -10,25 +10,55 @@ Last, how often the model's exponent lies inside the record's 95 % interval (doc
 "Divergence exponent's uncertainty"): runs with a fitted divergence exponent, inside when
 |lambda_record - lambda_model| <= 1.96 x the two uncertainties in quadrature.
 
-usage: verdict_vs_model.py RUNS_CSV [RUNS_CSV ...]
+With --relabel, the same sweeps run again with other, equally valid settings of the model's
+exponent (another renormalisation interval, another start-up discarded) follow, one group per
+setting in the same order: a run's label is settled when every setting gives it, and a second
+table counts only settled runs (docs/analysis.md, "How settled the labels are"). The record
+verdict does not depend on those settings; a run whose verdict differs between groups is an
+error (the groups are not the same sweeps).
+
+usage: verdict_vs_model.py RUNS_CSV [RUNS_CSV ...] [--relabel RUNS_CSV [RUNS_CSV ...]] ...
 """
 import csv
 import math
 import sys
 
 
-def counts(path):
-    c = {"tp": 0, "fp": 0, "fn": 0, "tn": 0, "skipped": 0}
+def labels(path):
+    """{(point, repeat): (model label or None when not measured, record's chaotic flag)}."""
+    out = {}
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             lam = float(row["lambda_model_per_s"])
             sd = float(row["lambda_model_uncertainty_per_s"])
-            if row["ok"] != "1" or math.isnan(lam) or math.isnan(sd):
-                c["skipped"] += 1
-                continue
-            model = lam > 3.0 * sd and lam > 0.0
-            record = row["chaotic"] == "1"
-            c[("t" if model == record else "f") + ("p" if record else "n")] += 1
+            measured = row["ok"] == "1" and not math.isnan(lam) and not math.isnan(sd)
+            model = lam > 3.0 * sd and lam > 0.0 if measured else None
+            out[(row["point"], row["repeat"])] = (model, row["chaotic"] == "1")
+    return out
+
+
+def settled(path, relabels):
+    """The runs of `path` with their label where every relabelling agrees, else None."""
+    base = labels(path)
+    for other_path in relabels:
+        other = labels(other_path)
+        if other.keys() != base.keys():
+            sys.exit(f"{other_path}: not the same runs as {path}")
+        for key, (model, record) in base.items():
+            if other[key][1] != record:
+                sys.exit(f"{other_path}: run {key} has another record verdict than in {path}")
+            if other[key][0] != model:
+                base[key] = (None, record)
+    return base
+
+
+def counts(runs):
+    c = {"tp": 0, "fp": 0, "fn": 0, "tn": 0, "skipped": 0}
+    for model, record in runs.values():
+        if model is None:
+            c["skipped"] += 1
+            continue
+        c[("t" if model == record else "f") + ("p" if record else "n")] += 1
     return c
 
 
@@ -60,21 +90,41 @@ def line(name, c):
             f"{100 * agree:.1f} % | {c['skipped']} |")
 
 
-def main(paths):
-    if not paths:
-        sys.exit(__doc__)
-    print("| sweep | runs | true pos. | false pos. | false neg. | true neg. | agreement | skipped |")
+def table(paths, relabel_groups, skipped_name):
+    print(f"| sweep | runs | true pos. | false pos. | false neg. | true neg. | agreement | "
+          f"{skipped_name} |")
     print("|---|---|---|---|---|---|---|---|")
     total = {"tp": 0, "fp": 0, "fn": 0, "tn": 0, "skipped": 0}
-    for p in paths:
-        c = counts(p)
+    for i, p in enumerate(paths):
+        c = counts(settled(p, [group[i] for group in relabel_groups]))
         for k in total:
             total[k] += c[k]
         print(line(p, c))
     print(line("**all**", total))
+
+
+def split_groups(args):
+    groups = [[]]
+    for a in args:
+        if a == "--relabel":
+            groups.append([])
+        else:
+            groups[-1].append(a)
+    if not groups[0] or any(len(g) != len(groups[0]) for g in groups):
+        sys.exit(__doc__)
+    return groups[0], groups[1:]
+
+
+def main(args):
+    paths, relabel_groups = split_groups(args)
+    table(paths, [], "skipped")
     inside, n, inside_chaotic, n_chaotic = coverage(paths)
     print(f"\nmodel exponent inside the record's 95 % interval: {inside} of {n} runs with a "
           f"fitted exponent; {inside_chaotic} of {n_chaotic} of those the model calls chaotic")
+    if relabel_groups:
+        print(f"\nRuns whose label is settled under all {len(relabel_groups) + 1} settings of the "
+              "model's exponent (unsettled ones are left out):\n")
+        table(paths, relabel_groups, "unsettled or skipped")
 
 
 if __name__ == "__main__":
