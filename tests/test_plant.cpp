@@ -161,6 +161,38 @@ TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
   for (std::size_t i = 0; i < va.size(); ++i) EXPECT_NEAR(va[i], vb[i], 1e-6);
 }
 
+// The default rig's guide has a Stribeck exponent of 0.5, whose slope is infinite at rest:
+// the Jacobian there takes the columns of difference quotients (docs/model.md, "Friction"),
+// finite, and the stiff stepper runs the default rig from rest. Before, its first Jacobian
+// was NaN and Rosenbrock 4 failed at t = 0 with "step size underflow".
+TEST(Plant, JacobianIsFiniteAtRestWhereTheStribeckSlopeIsInfinite) {
+  const Scenario s = default_scenario();
+  ASSERT_EQ(s.load.guide_friction.stribeck_exponent, 0.5);
+  const Plant plant(s);
+  const std::vector<double> x = plant.initial_state();
+  ASSERT_EQ(x[plant.layout().load_v], 0.0);
+  const std::size_t n = x.size();
+  std::vector<double> J(n * n), dfdt(n);
+  ASSERT_TRUE(plant.jacobian(plant.initial_mode(x, 0.0), x, 0.0, J, dfdt));
+  for (std::size_t k = 0; k < n * n; ++k) EXPECT_TRUE(std::isfinite(J[k])) << "entry " << k;
+}
+
+TEST(Plant, StiffStepperRunsTheDefaultRigWithinTheTolerancesError) {
+  Scenario s = default_scenario();
+  s.run.duration_s = 0.5;
+  const Plant plant(s);
+  auto o = s.run;
+  o.stepper = StepperKind::kRosenbrock4;
+  const auto stiff = simulate(plant, o);
+  ASSERT_TRUE(stiff.summary.ok()) << stiff.summary.message;
+  const auto reference = simulate(plant, tight(0.5));
+  ASSERT_TRUE(reference.summary.ok());
+  // dopri5 at the default tolerances is 2e-6 m/s off the reference by 0.5 s here, Rosenbrock 4
+  // 7e-7 (docs/performance.md, "The simulation's floor"); 1e-5 m/s is a tenth of a transducer's
+  // resolution and far below the chaotic motion's 0.1 m/s.
+  EXPECT_LT(largest_velocity_difference(stiff, reference), 1e-5);
+}
+
 // LuGre's quasi-static limit (docs/model.md, "Friction") against the full bristle equation
 // integrated at tight tolerances. Its first neglected term is the bristle's lag behind its
 // steady state, z - z0 ~ -(dz0/dt) / rate, a force error (sigma1 - g/|v|) dz0/dt that

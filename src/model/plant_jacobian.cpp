@@ -3,7 +3,10 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <unsupported/Eigen/AutoDiff>
+#include <vector>
 
 #include "plant_equations.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -16,6 +19,39 @@ namespace {
 constexpr int kMaxStates = 12;
 using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
 using Dual = Eigen::AutoDiffScalar<Gradient>;
+
+// Column j of df/dx by a forward difference, for the states where the law has no derivative:
+// a Stribeck exponent below 1 makes the level's slope infinite at rest (d sqrt(|v|)/dv at
+// v = 0), which automatic differentiation returns as inf or NaN. The secant over a step of
+// sqrt(eps) times the state's size (or its scale) is the finite slope the law has next to that
+// point; it is what a stiff stepper needs there, as exactness is not defined at the kink.
+void difference_column(const Plant& plant, const Mode& mode, std::span<const double> x,
+                       std::size_t j, double scale, std::span<double> dfdx) {
+  const std::size_t n = x.size();
+  std::vector<double> xh(x.begin(), x.end());
+  std::vector<double> f0(n), fh(n);
+  const double h = std::sqrt(std::numeric_limits<double>::epsilon()) *
+                   std::max(std::abs(x[j]), scale);
+  xh[j] += h;
+  plant.derivative(mode, x, f0, 0.0);
+  plant.derivative(mode, xh, fh, 0.0);
+  const double step = xh[j] - x[j];  // the step as represented
+  for (std::size_t i = 0; i < n; ++i) dfdx[i * n + j] = (fh[i] - f0[i]) / step;
+}
+
+// Every column with an inf or NaN entry is replaced by its difference quotient.
+void repair_nondifferentiable_columns(const Plant& plant, const Mode& mode,
+                                      std::span<const double> x, std::span<double> dfdx) {
+  const std::size_t n = x.size();
+  std::vector<double> scales;
+  for (std::size_t j = 0; j < n; ++j) {
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i) finite = finite && std::isfinite(dfdx[i * n + j]);
+    if (finite) continue;
+    if (scales.empty()) scales = plant.state_scales();
+    difference_column(plant, mode, x, j, scales[j], dfdx);
+  }
+}
 
 }  // namespace
 
@@ -38,6 +74,7 @@ bool Plant::jacobian(const Mode& mode, std::span<const double> x, double /*t*/,
       dfdx[i * n + j] = d.size() == 0 ? 0.0 : d[static_cast<Eigen::Index>(j)];
     }
   }
+  repair_nondifferentiable_columns(*this, mode, x, dfdx);
   std::fill(dfdt.begin(), dfdt.end(), 0.0);
   return true;
 }
