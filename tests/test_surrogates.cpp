@@ -9,6 +9,7 @@
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/fft.hpp"
+#include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -127,6 +128,32 @@ TEST(Evidence, TooShortForTheTestsSaysSoAndDegradesWithoutNaN) {
   EXPECT_FALSE(tiny.surrogate.run);
   EXPECT_NE(tiny.surrogate.reason.find("at least 500"), std::string::npos);
   EXPECT_EQ(tiny.verdict.regime, Regime::kUndetermined);
+}
+
+// A linear process beats all 39 surrogates in one record of 40 by chance (the test's level).
+// Such a record is forecast better by the linear predictor than by the local-constant one, so
+// the surrogate rejection alone must not make it deterministic (the blind records of
+// docs/analysis.md: a noise-driven linear oscillator, 5,000 samples, was called chaotic).
+TEST(Verdict, SurrogateRejectionAloneDoesNotMakeALinearRecordChaotic) {
+  RegimeEvidence e;
+  e.samples = 5000;
+  e.range = 11.0;
+  e.last_half_std = 1.5;
+  e.lyapunov_found = true;  // a noise-driven phase drifts: a slow rise of the curve
+  e.lyapunov_per_s = 0.026;
+  e.lyapunov_slope_uncertainty_per_s = 0.005;
+  e.surrogate_run = true;
+  e.surrogate_count = 39;
+  e.surrogate_rejected = e.surrogate_more_predictable = true;
+  e.prediction_computed = true;
+  e.prediction_nonlinear = 0.264;  // the record's figures
+  e.prediction_linear = 0.194;
+  const Verdict linear = decide_regime(e);
+  EXPECT_FALSE(linear.chaotic);
+  e.prediction_nonlinear = 0.12;  // the same, with nonlinear structure the linear model misses
+  EXPECT_TRUE(decide_regime(e).chaotic);
+  e.surrogate_more_predictable = false;  // and without the rejection, never
+  EXPECT_FALSE(decide_regime(e).chaotic);
 }
 
 }  // namespace

@@ -111,12 +111,17 @@ void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& n
     return;
   }
   note.info(line);
+  const bool nonlinear_wins =
+      !e.prediction_computed || ratio < o.surrogate_max_prediction_ratio;
   c.deterministic = note(
-      e.surrogate_more_predictable,
+      e.surrogate_more_predictable && nonlinear_wins,
       fmt::format("deterministic: the record's prediction error is below all {} IAAFT surrogates "
-                  "(rank {}, p = {:.3f}; linear-stochastic null {})",
+                  "(rank {}, p = {:.3f}; linear-stochastic null {}), and the local-constant "
+                  "predictor {} the linear one (ratio {:.3g}; needs below {})",
                   e.surrogate_count, e.surrogate_rank, e.surrogate_p,
-                  e.surrogate_rejected ? "rejected" : "kept"));
+                  e.surrogate_rejected ? "rejected" : "kept",
+                  nonlinear_wins ? "beats" : "does not beat", ratio,
+                  o.surrogate_max_prediction_ratio));
   c.noise_like = !e.surrogate_rejected;
 }
 
@@ -179,8 +184,9 @@ const char* regime_name(Regime r) {
 std::string verdict_rule(const VerdictOptions&) {
   return "exponential divergence = the divergence curve rises above 3 sigma AND NOT the record "
          "repeats itself (a small mismatch at one lag over most of the record, growing slower "
-         "than that rise); deterministic = more predictable than every surrogate (where run; "
-         "else prediction ratio low); chaotic = exponential divergence AND deterministic AND "
+         "than that rise); deterministic = more predictable than every surrogate and by the "
+         "local-constant predictor more than the linear one (where run; else prediction ratio "
+         "low); chaotic = exponential divergence AND deterministic AND "
          "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged; else "
          "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
          "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
