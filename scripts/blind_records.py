@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Records of systems the verdict was never designed on, and the verdicts `analyze` gives them.
 
-Generates 27 record types (chaotic flows and maps, periodic, quasi-periodic, steady and
-stochastic records; none of them in the validation corpus or the held-out set of
+Generates 36 record types (chaotic flows and maps, periodic, quasi-periodic, steady,
+linear and nonlinear stochastic records; none of them in the validation corpus or the held-out set of
 docs/analysis.md) at 10,000 and 5,000 samples as CSV files in DIR, then, with --cli, analyses
 each with `analyze`'s defaults (39 surrogates) and without surrogates (the sweep's setting) and
 prints the verdicts as a Markdown table. Exit status 1 when a record that is not chaotic is
@@ -170,6 +170,52 @@ def stochastic(rng):
     }
 
 
+def euler_maruyama(drift, noise, x0, dt, n, substeps, rng, transient=2000):
+    """First coordinate of dx = drift(x) dt + noise dW, sampled every dt."""
+    x = np.array(x0, float)
+    h = dt / substeps
+    out = np.empty(n)
+    for i in range(transient + n):
+        for _ in range(substeps):
+            x = x + h * drift(x) + np.sqrt(h) * noise * rng.standard_normal(x.size)
+        if i >= transient:
+            out[i - transient] = x[0]
+    return out
+
+
+def nonlinear_stochastic(rng):
+    """Noise-driven nonlinear systems: stochastic, and nonlinear enough to beat surrogates."""
+    n = SAMPLES
+    e = rng.standard_normal(n)
+    setar, bilinear = np.zeros(n), np.zeros(n)
+    for i in range(1, n):
+        setar[i] = (0.7 if setar[i - 1] <= 0 else -0.5) * setar[i - 1] + e[i]
+        bilinear[i] = 0.4 * bilinear[i - 1] + 0.4 * bilinear[i - 1] * e[i - 1] + e[i]
+    x, noisy_map = 0.3, []
+    for i in range(n + 1000):  # r = 3.5 (period 4) with dynamic noise: exponent still < 0
+        x = min(max(3.5 * x * (1 - x) + 0.01 * rng.standard_normal(), 1e-6), 1 - 1e-6)
+        if i >= 1000:
+            noisy_map.append(x)
+    regime = np.cumsum(rng.random(n) < 0.01) % 2
+    log_vol = ar(0.98, 0.2 * rng.standard_normal(n))
+    return {
+        "N_van_der_pol_dynamic_noise": (euler_maruyama(
+            lambda s: np.array([s[1], (1 - s[0] ** 2) * s[1] - s[0]]), np.array([0, 0.5]),
+            [1, 0], 0.1, n, 10, rng), 10),
+        "N_double_well_noise": (euler_maruyama(
+            lambda s: np.array([s[1], -0.25 * s[1] + s[0] - s[0] ** 3]), np.array([0, 0.3]),
+            [1, 0], 0.1, n, 10, rng), 10),
+        "N_phase_diffusion": (np.sin(np.cumsum(2 * np.pi / 40 + 0.05 * rng.standard_normal(n))),
+                              1),
+        "N_logistic_period4_noise": (np.array(noisy_map), 1),
+        "N_setar": (setar, 1),
+        "N_bilinear": (bilinear, 1),
+        "N_markov_switching": (4.0 * regime - 2.0 + rng.standard_normal(n), 1),
+        "N_stochastic_volatility": (np.exp(log_vol / 2) * rng.standard_normal(n), 1),
+        "N_ar_squared": (ar(0.95, rng.standard_normal(n)) ** 2, 1),
+    }
+
+
 def write(directory, name, values, rate):
     with open(os.path.join(directory, name + ".csv"), "w") as f:
         f.write("t,v\n")
@@ -193,7 +239,7 @@ def main(argv):
     cli = argv[2] if len(argv) >= 3 and argv[1] == "--cli" else None
     os.makedirs(directory, exist_ok=True)
     rng = np.random.default_rng(20261124)
-    records = {**chaotic(rng), **regular(), **stochastic(rng)}
+    records = {**chaotic(rng), **regular(), **stochastic(rng), **nonlinear_stochastic(rng)}
     for name, (values, rate) in records.items():
         write(directory, name, values, rate)
         write(directory, name + "_5k", values[:5000], rate)

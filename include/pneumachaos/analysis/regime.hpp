@@ -48,10 +48,11 @@ struct VerdictOptions {
   /// predictor's (for a linear Gaussian process the linear one is optimal: ratio >= ~1).
   double max_prediction_ratio = 0.5;
   /// With the surrogate test run, determinism also needs the local-constant predictor to beat
-  /// the linear one (ratio below this): a record the linear predictor forecasts better shows no
-  /// nonlinear structure, and one linear-noise record in 40 beats all 39 surrogates by chance
+  /// the linear one clearly (ratio below this). A linear record beats all 39 surrogates by
+  /// chance once in 40, and a noise-driven nonlinear oscillator beats them every time, yet
+  /// both are forecast about as well linearly (ratio 0.9-1.4); noisy chaos reads 0.6-0.76
   /// (docs/analysis.md, "Blind records").
-  double surrogate_max_prediction_ratio = 1.0;
+  double surrogate_max_prediction_ratio = 0.8;
   /// Regular motion keeps its autocorrelation: late envelope at least this (a tone: ~0.8).
   double periodic_min_late_acf = 0.5;
   /// Without a 0-1 test, regular also needs a concentrated spectrum (broadband share below).
