@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Records of systems the verdict was never designed on, and the verdicts `analyze` gives them.
 
-Generates 36 record types (chaotic flows and maps, periodic, quasi-periodic, steady,
-linear and nonlinear stochastic records; none of them in the validation corpus or the held-out set of
+Generates 43 record types (chaotic flows and maps, periodic, quasi-periodic, steady,
+linear and nonlinear stochastic, non-stationary records; none of them in the validation corpus or the held-out set of
 docs/analysis.md) at 10,000 and 5,000 samples as CSV files in DIR, then, with --cli, analyses
 each with `analyze`'s defaults (39 surrogates) and without surrogates (the sweep's setting) and
 prints the verdicts as a Markdown table. Exit status 1 when a record that is not chaotic is
@@ -216,6 +216,27 @@ def nonlinear_stochastic(rng):
     }
 
 
+def nonstationary_and_edge_cases(rng):
+    """Regular records that are non-stationary or look irregular, and intermittent chaos."""
+    n = SAMPLES
+    t = np.arange(n)
+    pulses = np.zeros(n)
+    for start in np.cumsum(60 + 8 * rng.standard_normal(300)).astype(int):
+        if start + 20 < n:
+            pulses[start:start + 20] += np.sin(np.pi * np.arange(20) / 20)
+    return {
+        "C_logistic_intermittent": (iterate(lambda x: 3.8282 * x * (1 - x), 0.3, n), 1),
+        "P_chirp": (np.sin(2 * np.pi * (0.01 * t + 0.015 * t * t / n)), 1),
+        "P_sine_on_a_trend": (np.sin(2 * np.pi * t / 50) + 3 * t / n, 1),
+        "P_sine_aliased": (np.sin(2 * np.pi * 0.4137 * t), 1),
+        "Q_beats": (np.sin(2 * np.pi * t / 50) + np.sin(2 * np.pi * t / 52.3), 1),
+        "Q_torus3_noise": (np.sin(2 * np.pi * t / 37) + 0.7 * np.sin(2 * np.pi * t / (37 * 2 ** 0.5))
+                           + 0.5 * np.sin(2 * np.pi * t / (37 * 3 ** 0.5))
+                           + 0.1 * rng.standard_normal(n), 1),
+        "N_jittered_pulses": (pulses + 0.01 * rng.standard_normal(n), 1),
+    }
+
+
 def write(directory, name, values, rate):
     with open(os.path.join(directory, name + ".csv"), "w") as f:
         f.write("t,v\n")
@@ -239,7 +260,8 @@ def main(argv):
     cli = argv[2] if len(argv) >= 3 and argv[1] == "--cli" else None
     os.makedirs(directory, exist_ok=True)
     rng = np.random.default_rng(20261124)
-    records = {**chaotic(rng), **regular(), **stochastic(rng), **nonlinear_stochastic(rng)}
+    records = {**chaotic(rng), **regular(), **stochastic(rng), **nonlinear_stochastic(rng),
+               **nonstationary_and_edge_cases(rng)}
     for name, (values, rate) in records.items():
         write(directory, name, values, rate)
         write(directory, name + "_5k", values[:5000], rate)
