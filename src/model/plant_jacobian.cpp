@@ -25,15 +25,16 @@ using Dual = Eigen::AutoDiffScalar<Gradient>;
 // v = 0), which automatic differentiation returns as inf or NaN. The secant over a step of
 // sqrt(eps) times the state's size (or its scale) is the finite slope the law has next to that
 // point; it is what a stiff stepper needs there, as exactness is not defined at the kink.
+// f0 is the derivative at x, shared by every repaired column.
 void difference_column(const Plant& plant, const Mode& mode, std::span<const double> x,
-                       std::size_t j, double scale, std::span<double> dfdx) {
+                       std::span<const double> f0, std::size_t j, double scale,
+                       std::span<double> dfdx) {
   const std::size_t n = x.size();
   std::vector<double> xh(x.begin(), x.end());
-  std::vector<double> f0(n), fh(n);
+  std::vector<double> fh(n);
   const double h = std::sqrt(std::numeric_limits<double>::epsilon()) *
                    std::max(std::abs(x[j]), scale);
   xh[j] += h;
-  plant.derivative(mode, x, f0, 0.0);
   plant.derivative(mode, xh, fh, 0.0);
   const double step = xh[j] - x[j];  // the step as represented
   for (std::size_t i = 0; i < n; ++i) dfdx[i * n + j] = (fh[i] - f0[i]) / step;
@@ -43,13 +44,17 @@ void difference_column(const Plant& plant, const Mode& mode, std::span<const dou
 void repair_nondifferentiable_columns(const Plant& plant, const Mode& mode,
                                       std::span<const double> x, std::span<double> dfdx) {
   const std::size_t n = x.size();
-  std::vector<double> scales;
+  std::vector<double> scales, f0;
   for (std::size_t j = 0; j < n; ++j) {
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) finite = finite && std::isfinite(dfdx[i * n + j]);
     if (finite) continue;
-    if (scales.empty()) scales = plant.state_scales();
-    difference_column(plant, mode, x, j, scales[j], dfdx);
+    if (scales.empty()) {
+      scales = plant.state_scales();
+      f0.resize(n);
+      plant.derivative(mode, x, f0, 0.0);
+    }
+    difference_column(plant, mode, x, f0, j, scales[j], dfdx);
   }
 }
 
