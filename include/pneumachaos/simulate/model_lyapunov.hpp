@@ -57,9 +57,9 @@ class Plant;
 
 /// The cylinder's exponent from the start of a run: the plant's state scales, the separation
 /// along P1 (which leaves a stuck contact stuck), rtol 1e-9 and atol 1e-12 times
-/// tolerance_factor (the separation, 1 Pa by default, stays ~3 decades above the integration
-/// error and below the motion); the largest step and the stepper from the scenario's `run`;
-/// transient, measuring time and intervals from `base`.
+/// tolerance_factor; the largest step and the stepper from the scenario's `run`; transient,
+/// measuring time, intervals and separation from `base`. A separation below 3e4 x rtol (the
+/// default 1e-4, 1 Pa, is 1e5 x) is refused: the exponent would read integration error.
 ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run,
                                    ModelLyapunovOptions base = {}, double tolerance_factor = 1.0);
 
