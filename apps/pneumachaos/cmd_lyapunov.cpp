@@ -35,8 +35,10 @@ Action add_lyapunov(CLI::App& app) {
   cmd->add_option("--renormalize", args->o.renormalize_s,
                   "renormalisation interval [s] (default 0.02)");
   cmd->add_option("--separation", args->o.separation,
-                  "initial separation in scaled units (1 = 10 kPa on P1; default 1e-3 = 10 Pa; at "
-                  "least 1e6 x the relative tolerance, so smaller only with --tolerance-factor)");
+                  fmt::format("initial separation in scaled units (1 = 10 kPa on P1; default "
+                              "{:g}; at least {:g} x the relative tolerance, so smaller only "
+                              "with --tolerance-factor)",
+                              ModelLyapunovOptions{}.separation, kPlantSeparationPerTolerance));
   cmd->add_option(
       "--tolerance-factor", args->tolerance_factor,
       "multiply the integration tolerances (rtol 1e-9, atol 1e-12; e.g. 0.5 to confirm)");

@@ -247,18 +247,17 @@ ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, Mod
   o.perturbed_state = plant.layout().P1;
   o.relative_tolerance = 1e-9 * tolerance_factor;
   o.absolute_tolerance = 1e-12 * tolerance_factor;
-  // Below this the two trajectories' own integration errors, accumulated over an interval,
-  // are renormalised as if they were divergence, and the exponent grows as the separation
-  // shrinks (docs/analysis.md, "The model exponent's separation floor": at rtol 1e-9 a
-  // periodic point reads 0.0 at 1e-3, 1.2-1.8 1/s at 1e-4 and 3.7-8.5 1/s at 3e-5).
-  constexpr double kSeparationPerTolerance = 1e6;
-  const double floor = kSeparationPerTolerance * o.relative_tolerance;
-  if (o.separation < floor * (1.0 - 1e-9)) {  // a rounding below the floor is at the floor
+  // Below the floor the two trajectories' own integration errors are renormalised as if they
+  // were divergence (kPlantSeparationPerTolerance).
+  const double min_separation = kPlantSeparationPerTolerance * o.relative_tolerance;
+  // A separation that rounds to just below the floor is at the floor.
+  if (o.separation < min_separation * (1.0 - 1e-9)) {
     throw Error("lyapunov.separation",
                 fmt::format("{:g} is within {:g} x the integration's relative tolerance ({:g}): "
                             "the integration error would be measured as divergence; use at least "
                             "{:g}, or tighten the tolerances with --tolerance-factor",
-                            o.separation, kSeparationPerTolerance, o.relative_tolerance, floor));
+                            o.separation, kPlantSeparationPerTolerance, o.relative_tolerance,
+                            min_separation));
   }
   o.max_step_s = run.max_step_s;
   o.stepper = run.stepper;

@@ -56,6 +56,13 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
 
 class Plant;
 
+/// The cylinder's smallest separation per unit of relative tolerance. Below it the two
+/// trajectories' integration errors, accumulated over an interval, are renormalised as if they
+/// were divergence and the exponent grows as the separation shrinks (docs/analysis.md, "The
+/// model exponent's separation floor": at rtol 1e-9 a periodic point reads 0.0 at 1e-3,
+/// 0.7-1.8 1/s at 1e-4 and 3.7-8.5 1/s at 3e-5).
+inline constexpr double kPlantSeparationPerTolerance = 1e6;
+
 /// The cylinder's exponent from the start of a run: the plant's state scales, the separation
 /// along P1 (which leaves a stuck contact stuck), rtol 1e-9 and atol 1e-12 times
 /// tolerance_factor; the largest step and the stepper from the scenario's `run`; transient,
