@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <climits>
 #include <cstdint>
 #include <optional>
@@ -24,23 +23,6 @@ AnalysisResult analyzed(const Channel& channel, double rate_Hz, const AnalysisOp
   } catch (const Error& e) {
     throw Error(fmt::format("{}, column {}", file, channel.name), e.what());
   }
-}
-
-// The integer options are read as text and checked here, so that a bad value is a
-// pneumachaos::Error naming the option (exit code 2) like every other bad input.
-long long integer_option(const std::string& name, const std::string& text, long long min) {
-  long long v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size()) {
-    throw pneumachaos::Error(name, fmt::format("expected an integer, got \"{}\"", text));
-  }
-  if (v < min) throw pneumachaos::Error(name, fmt::format("{} is out of range: must be >= {}", v, min));
-  return v;
-}
-
-std::size_t option_or(const std::optional<std::string>& text, const std::string& name,
-                      long long min, std::size_t automatic) {
-  return text ? static_cast<std::size_t>(integer_option(name, *text, min)) : automatic;
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 // parsing. Commands only translate arguments into library calls; no physics here.
 
 #include <CLI/CLI.hpp>
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,13 @@ void add_scenario_options(CLI::App* cmd, ScenarioArgs& args);
 
 /// --column-t/-v/-P1/-P2/-x/-a: the header names of a measured record's columns.
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns);
+
+/// An integer option read as text, so that a bad value is an Error naming the option `name`
+/// (exit code 2): "expected an integer" or "out of range: must be >= min".
+long long integer_option(const std::string& name, const std::string& text, long long min);
+/// The option's value checked as above, or `automatic` when it was not given.
+std::size_t option_or(const std::optional<std::string>& text, const std::string& name,
+                      long long min, std::size_t automatic);
 
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);

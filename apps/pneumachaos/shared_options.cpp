@@ -1,5 +1,10 @@
 #include "commands.hpp"
 
+#include <charconv>
+#include <fmt/format.h>
+
+#include "pneumachaos/core/error.hpp"
+
 namespace pneumachaos::cli {
 
 void add_scenario_options(CLI::App* cmd, ScenarioArgs& args) {
@@ -16,6 +21,23 @@ void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) 
   cmd->add_option("--column-x", columns.x, "header name of the position column (default x; optional)");
   cmd->add_option("--column-a", columns.a,
                   "header name of an acceleration column (default a; optional)");
+}
+
+// The integer options are read as text and checked here, so that a bad value is a
+// Error naming the option (exit code 2) like every other bad input.
+long long integer_option(const std::string& name, const std::string& text, long long min) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size()) {
+    throw Error(name, fmt::format("expected an integer, got \"{}\"", text));
+  }
+  if (v < min) throw Error(name, fmt::format("{} is out of range: must be >= {}", v, min));
+  return v;
+}
+
+std::size_t option_or(const std::optional<std::string>& text, const std::string& name,
+                      long long min, std::size_t automatic) {
+  return text ? static_cast<std::size_t>(integer_option(name, *text, min)) : automatic;
 }
 
 }  // namespace pneumachaos::cli

@@ -35,8 +35,9 @@ void check_header(const std::string& line, const std::string& path,
   }
   if (line.rfind(kHeaderStart, 0) == 0) {
     throw Error(path,
-                "the journal belongs to a different sweep (another scenario, grid, repeats or "
-                "seed) or to another version of pneumachaos; refusing to resume into it");
+                "the journal belongs to a different sweep (another scenario, grid, repeats, "
+                "seed, --wolf, --surrogates or model-exponent settings) or to another version "
+                "of pneumachaos; refusing to resume into it");
   }
   throw Error(fmt::format("{}:1", path),
               "the journal is damaged: its first line is not a pneumachaos journal header; "

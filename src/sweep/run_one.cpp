@@ -91,6 +91,7 @@ RunRecord judge_run(const SweepSpec& spec, const SweepRun& run) {
   r.std_v = standard_deviation(run.measured_v);
   AnalysisOptions options;
   options.wolf = spec.wolf;
+  options.surrogates.count = spec.surrogates;
   try {
     record_analysis(analyze_series(run.measured_v, run.sim.series.rate_Hz(), options), r);
   } catch (const Error& e) {

@@ -46,6 +46,7 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                {"repeats", spec.repeats},
                {"seed", spec.seed},
                {"wolf", spec.wolf},
+               {"surrogates", spec.surrogates},
                {"model_exponent", spec.model_exponent.enabled}};
   if (spec.model_exponent.enabled) {
     const ModelExponentSpec& m = spec.model_exponent;

@@ -61,6 +61,8 @@ std::string SweepSpec::fingerprint() const {
     text += "\n";
   }
   text += fmt::format("repeats={} seed={} wolf={}\n", repeats, seed, wolf);
+  // Only when on, so that the journals of sweeps from before the option still resume.
+  if (surrogates > 0) text += fmt::format("surrogates={}\n", surrogates);
   const ModelExponentSpec& m = model_exponent;
   text += fmt::format("model_exponent={} transient={} measure={} renormalize={}\n", m.enabled,
                       m.transient_s, m.measure_s, m.renormalize_s);

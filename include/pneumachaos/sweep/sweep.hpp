@@ -34,6 +34,10 @@ struct SweepSpec {
   std::size_t repeats = 5;
   std::uint64_t seed = 1;
   bool wolf = false;  ///< also run Wolf's estimator per run (slower; the verdict does not use it)
+  /// IAAFT surrogates per run for the verdict's determinism test (0 = off, as in the library:
+  /// 39 cost about 1.2 s of CPU per 10 s rig run); seeded as `analyze`'s default, so
+  /// `analyze --surrogates N` on a replayed record gives the run's verdict.
+  std::size_t surrogates = 0;
   ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
   void validate() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
