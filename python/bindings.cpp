@@ -159,13 +159,17 @@ std::string stability_map_csv(const Scenario& scenario, const std::vector<std::s
 
 py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid,
                   std::size_t repeats, std::uint64_t seed, const std::string& out,
-                  std::size_t threads, bool resume, const py::object& progress) {
+                  std::size_t threads, bool resume, const py::object& progress, bool wolf,
+                  std::size_t surrogates, const ModelExponentSpec& model_exponent) {
   SweepSpec spec;
   spec.base = scenario;
   for (const auto& g : grid) spec.axes.push_back(parse_grid_axis(g));
   if (spec.axes.empty()) spec.axes = paper_valve_grid();
   spec.repeats = repeats;
   spec.seed = seed;
+  spec.wolf = wolf;
+  spec.surrogates = surrogates;
+  spec.model_exponent = model_exponent;
   SweepOptions o;
   o.out_dir = out;
   o.threads = threads;
@@ -276,6 +280,12 @@ PYBIND11_MODULE(_core, m) {
     if (!r.ok) throw RunError("model_lyapunov", r.message);
     return lyapunov_json(r, o);
   });
+  py::class_<ModelExponentSpec>(m, "ModelExponentSpec")
+      .def(py::init<>())
+      .def_readwrite("enabled", &ModelExponentSpec::enabled)
+      .def_readwrite("transient_s", &ModelExponentSpec::transient_s)
+      .def_readwrite("measure_s", &ModelExponentSpec::measure_s)
+      .def_readwrite("renormalize_s", &ModelExponentSpec::renormalize_s);
   m.def("sweep", &sweep_py);
   m.def("friction_json", &friction_py);
   m.def("fit_json", &fit_py);

@@ -24,7 +24,7 @@ void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) 
 }
 
 // The integer options are read as text and checked here, so that a bad value is a
-// Error naming the option (exit code 2) like every other bad input.
+// pneumachaos::Error naming the option (exit code 2) like every other bad input.
 long long integer_option(const std::string& name, const std::string& text, long long min) {
   long long v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);

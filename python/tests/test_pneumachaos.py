@@ -1,5 +1,6 @@
 """The Python package against the same known answers as the C++ tests."""
 
+import json
 import math
 import os
 
@@ -122,6 +123,26 @@ def test_model_lyapunov_and_a_small_sweep(tmp_path):
     assert (tmp_path / "map" / "runs.csv").exists()
     with pytest.raises(ValueError, match="already holds a sweep"):
         pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=2, out=str(tmp_path / "map"))
+
+
+def test_sweep_with_surrogates_and_the_model_exponent(tmp_path):
+    """The CLI's --surrogates and --model-exponent reach the sweep: the spec in summary.json
+    says so, and every run stores a finite model exponent."""
+    import csv
+    s = pc.Scenario.default().set("run.duration_s", 2.0)
+    pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=1, out=str(tmp_path / "m"),
+             threads=2, progress=False, surrogates=19, model_exponent=True,
+             model_transient_s=0.5)
+    spec = json.loads((tmp_path / "m" / "summary.json").read_text())["spec"]
+    assert spec["surrogates"] == 19 and spec["model_exponent"] is True
+    with open(tmp_path / "m" / "runs.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 2 and all(math.isfinite(float(r["lambda_model_per_s"])) for r in rows)
+    with pytest.raises(ValueError, match="surrogates"):
+        pc.sweep(s, out=str(tmp_path / "bad"), surrogates=-1)
+    with pytest.raises(ValueError, match="transient"):
+        pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.05:0.15"], repeats=1, out=str(tmp_path / "t"),
+                 progress=False, model_exponent=True, model_transient_s=5.0)
 
 
 def test_friction_and_fit_on_a_simulated_record():
