@@ -199,6 +199,10 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   d["stick_slip_points"] = s.stick_slip_points;
   d["chaos_full_points"] = s.chaos_full_points;
   d["chaos_any_points"] = s.chaos_any_points;
+  if (model_exponent.enabled) {
+    d["model_chaos_full_points"] = s.model_chaos_full_points;
+    d["model_chaos_any_points"] = s.model_chaos_any_points;
+  }
   return d;
 }
 

@@ -6,17 +6,19 @@ times its uncertainty, as verdict_vs_model.py) and fits three classifiers to tho
 the numbers the record analysis stores per run -- divergence exponent and its uncertainty,
 broadband share, late autocorrelation, stick-slip flag, 0-1 K, prediction ratio, repeat share,
 each with a flag for "not measured" -- and nothing about the run's place in the map or its
-model exponent. It prints their 10-fold cross-validated agreement (three shuffles), which no
-fixed rule on these numbers can beat on average by more than the spread of the folds
-(docs/analysis.md, "What a rule fitted to the labels could do").
+model exponent. It prints their 10-fold cross-validated agreement over three shuffles (the
+spread given is the shuffles'). The folds are drawn by grid point: every run at one point of
+the grid (its repeats, with and without seal variation, under every condition) is in one
+fold, so a run is never judged by its own twin (docs/analysis.md, "What a rule fitted to the
+labels could do").
 
 With --transfer, the classifiers fitted to every run given first then judge the runs after
 --transfer (another rig or configuration): a boundary that holds only on the sweeps it was
-fitted to fails there. --relabel groups, as in verdict_vs_model.py, leave out the fitted runs
-whose label is not settled.
+fitted to fails there. --relabel groups, as in verdict_vs_model.py, come before --transfer
+and leave out the fitted runs whose label is not settled.
 
 Needs numpy alone (the machine has no scipy): k nearest neighbours (k = 5), logistic
-regression (ridge, Newton steps) and a tree of depth 2 (one threshold, then one more).
+regression (ridge, Newton steps) and a tree of depth 2 (Gini splits).
 
 usage: verdict_ceiling.py RUNS_CSV [...] [--relabel RUNS_CSV [...]] ... [--transfer RUNS_CSV [...]]
 """
@@ -35,31 +37,38 @@ FEATURES = ("lambda_per_s", "lambda_uncertainty_per_s", "broadband_share", "late
 
 
 def runs(path, relabels):
-    """Features (value, 1 if not measured) and model label of every settled, labelled run."""
+    """Features (value, 1 if not measured), model label and grid point of every settled,
+    labelled run; the point is the run's grid coordinates (the columns before "point")."""
     keep = settled(path, relabels)
-    rows, labels = [], []
+    rows, labels, points = [], [], []
     with open(path, newline="") as f:
-        for row in csv.DictReader(f):
+        reader = csv.DictReader(f)
+        coordinates = reader.fieldnames[:reader.fieldnames.index("point")]
+        for row in reader:
             model = keep[(row["point"], row["repeat"])][0]
             if model is None:
                 continue
             values = [float(row[k]) for k in FEATURES]
             rows.append([x for v in values for x in ((0.0, 1.0) if math.isnan(v) else (v, 0.0))])
             labels.append(1 if model else 0)
-    return rows, labels
+            points.append(tuple(row[c] for c in coordinates))
+    return rows, labels, points
 
 
 def gather(paths, relabel_groups):
-    rows, labels = [], []
+    rows, labels, points = [], [], []
     for i, p in enumerate(paths):
-        r, l = runs(p, [group[i] for group in relabel_groups])
+        r, l, q = runs(p, [group[i] for group in relabel_groups])
         rows += r
         labels += l
-    return np.array(rows, dtype=float).reshape(-1, 2 * len(FEATURES)), np.array(labels)
+        points += q
+    x = np.array(rows, dtype=float).reshape(-1, 2 * len(FEATURES))
+    return x, np.array(labels, dtype=int), points
 
 
 def standardise(train, test):
-    mean, sd = train.mean(axis=0), train.std(axis=0) + 1e-12
+    mean, sd = train.mean(axis=0), train.std(axis=0)
+    sd[sd == 0.0] = 1.0  # a number constant in training (say, never "not measured") stays as is
     return (train - mean) / sd, (test - mean) / sd
 
 
@@ -83,23 +92,26 @@ def logistic(x, y, test, ridge=1.0, steps=50):
     return (b @ w > 0).astype(int)
 
 
-def split_errors(y):
-    return min(y.sum(), len(y) - y.sum())
+def impurity(y):
+    """Gini impurity times the count: 0 for one class, and it falls with every purer split,
+    also one that leaves the majority unchanged on both sides (counting errors would not)."""
+    p = y.mean() if len(y) else 0.0
+    return 2.0 * len(y) * p * (1.0 - p)
 
 
 def grow(x, y, depth):
-    """A node: the majority label, or (feature, threshold, left, right) with fewest errors."""
+    """A node: the majority label, or (feature, threshold, left, right) of least impurity."""
     majority = int(y.mean() > 0.5) if len(y) else 0
-    if depth == 0 or split_errors(y) == 0:
+    if depth == 0 or impurity(y) == 0.0:
         return majority
     best = None
     for j in range(x.shape[1]):
         values = np.unique(x[:, j])
         for t in (values[:-1] + values[1:]) / 2:
             left = x[:, j] <= t
-            errors = split_errors(y[left]) + split_errors(y[~left])
-            if best is None or errors < best[0]:
-                best = (errors, j, t)
+            cost = impurity(y[left]) + impurity(y[~left])
+            if best is None or cost < best[0]:
+                best = (cost, j, t)
     if best is None:
         return majority
     _, j, t = best
@@ -121,13 +133,16 @@ CLASSIFIERS = (("5 nearest neighbours", nearest_neighbours), ("logistic regressi
                ("tree of depth 2", tree))
 
 
-def cross_validated(x, y, fit, folds=10, seed=1):
-    order = np.random.default_rng(seed).permutation(len(y))
+def cross_validated(x, y, points, fit, folds=10, seed=1):
+    """Agreement out of sample, with every run of one grid point in the same fold."""
+    names = sorted(set(points))
+    fold_of = dict(zip(names, np.random.default_rng(seed).permutation(len(names)) % folds))
+    fold = np.array([fold_of[p] for p in points])
     right = 0
     for k in range(folds):
-        test = order[k::folds]
-        train = np.setdiff1d(order, test)
-        right += int((fit(x[train], y[train], x[test]) == y[test]).sum())
+        test = fold == k
+        if test.any():
+            right += int((fit(x[~test], y[~test], x[test]) == y[test]).sum())
     return right / len(y)
 
 
@@ -136,17 +151,24 @@ def main(args):
     if "--transfer" in args:
         i = args.index("--transfer")
         fitted, transfer = args[:i], args[i + 1:]
-        if not transfer:
-            sys.exit(__doc__)
-    x, y = gather(*split_groups(fitted))
+        if not transfer or "--relabel" in transfer or "--transfer" in transfer:
+            sys.exit("verdict_ceiling.py: --transfer takes runs.csv files only, after every "
+                     "--relabel group\n\n" + __doc__)
+    x, y, points = gather(*split_groups(fitted))
     if len(y) < 20 or y.min() == y.max():
         sys.exit(f"verdict_ceiling.py: {len(y)} labelled runs with {int(y.sum())} chaotic: too "
                  "few, or one class only, to fit a classifier")
-    print(f"{len(y)} runs, {int(y.sum())} labelled chaotic; calling every run regular agrees "
-          f"on {100 * (1 - y.mean()):.1f} %")
-    tx, ty = gather(transfer, []) if transfer else (None, None)
+    if len(set(points)) < 10:
+        sys.exit(f"verdict_ceiling.py: {len(set(points))} grid points: ten folds need ten")
+    print(f"{len(y)} runs at {len(set(points))} grid points, {int(y.sum())} labelled chaotic; "
+          f"calling every run regular agrees on {100 * (1 - y.mean()):.1f} %")
+    tx, ty = (None, None)
+    if transfer:
+        tx, ty, _ = gather(transfer, [])
+        if len(ty) == 0:
+            sys.exit("verdict_ceiling.py: the --transfer files hold no labelled run")
     for name, fit in CLASSIFIERS:
-        scores = [100 * cross_validated(x, y, fit, seed=s) for s in (1, 2, 3)]
+        scores = [100 * cross_validated(x, y, points, fit, seed=s) for s in (1, 2, 3)]
         text = (f"{name}: 10-fold cross-validated agreement {np.mean(scores):.1f} % "
                 f"(shuffles {', '.join(f'{s:.1f}' for s in scores)})")
         if transfer:

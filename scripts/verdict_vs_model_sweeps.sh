@@ -2,14 +2,16 @@
 # Issue 11 item 7: the record verdict against the model's own exponent, the four map conditions,
 # rows S2 0.05-0.65 mm^2, with (2 runs) and without (1 run) seal variation: 360 runs, ~1 min on
 # 2 cores (3 min with --relabel). Run from an empty directory; PNEUMACHAOS_CLI names the binary.
-# usage: verdict_vs_model_sweeps.sh [--relabel] [--set KEY=VALUE ...] [SCENARIO.toml]  (the
-# scenario goes to every sweep, e.g. docs/variants/gms_candidate.toml; default: the built-in
-# scenario). --relabel runs the sweeps twice more with other settings of the model's exponent
-# (renormalised every 0.04 s; 2 s of start-up discarded) and adds the table of runs whose label
-# all three settings give (docs/analysis.md, "How settled the labels are"). Each --set is
-# passed to every sweep after the script's own, so it overrides them: e.g. --set
-# run.duration_s=40 for 40 s records, --set variation.texture_rel=0 for seal variation without
-# bore texture (docs/analysis.md, "Record length, bore texture and moving volumes").
+# usage: verdict_vs_model_sweeps.sh [--relabel] [--set KEY=VALUE ...] [--surrogates N]
+# [SCENARIO.toml]  (the scenario goes to every sweep, e.g. docs/variants/gms_candidate.toml;
+# default: the built-in scenario). --relabel runs the sweeps twice more with other settings of
+# the model's exponent (renormalised every 0.04 s; 2 s of start-up discarded) and adds the
+# table of runs whose label all three settings give (docs/analysis.md, "How settled the labels
+# are"). Each --set is passed to every sweep after the script's own, so it overrides them:
+# e.g. --set run.duration_s=40 for 40 s records, --set variation.texture_rel=0 for seal
+# variation without bore texture (docs/analysis.md, "Record length, bore texture and moving
+# volumes"). --surrogates N goes to every sweep too: the verdict with N IAAFT surrogates per
+# record (docs/analysis.md, "The sweep with surrogates").
 set -eu
 cli=${PNEUMACHAOS_CLI:?set PNEUMACHAOS_CLI to the pneumachaos binary}
 relabel=0
@@ -21,6 +23,9 @@ while [ $# -ge 1 ]; do
       [ $# -ge 2 ] || { echo "verdict_vs_model_sweeps.sh: --set needs KEY=VALUE" >&2; exit 2; }
       case "$2" in *=*) ;; *) echo "verdict_vs_model_sweeps.sh: --set '$2': expected KEY=VALUE" >&2; exit 2 ;; esac
       extra="$extra --set $2"; shift 2 ;;
+    --surrogates)
+      [ $# -ge 2 ] || { echo "verdict_vs_model_sweeps.sh: --surrogates needs N" >&2; exit 2; }
+      extra="$extra --surrogates $2"; shift 2 ;;
     *) break ;;
   esac
 done

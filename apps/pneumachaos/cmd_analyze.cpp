@@ -59,7 +59,7 @@ Action add_analyze(CLI::App& app) {
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
   cmd->add_option("--surrogates", args->surrogates,
                   "IAAFT surrogates for the test against linear noise (default 39: a two-sided "
-                  "95 % rank test, about 0.5 s for 1e4 samples; 0 = off)");
+                  "95 % rank test, about 0.5 s for 1e4 samples; 0 = off, else 19 to 999)");
   cmd->add_option("--seed", args->seed,
                   "seed of the surrogates and the 0-1 test's frequencies (any integer; default 1)");
   cmd->add_option("--dimension", args->dimension, "embedding dimension (>= 1; default: Cao)");
@@ -70,7 +70,7 @@ Action add_analyze(CLI::App& app) {
   return [args]() {
     AnalysisOptions options;
     options.wolf = !args->no_wolf;
-    options.surrogates.count = option_or(args->surrogates, "--surrogates", 0, 39);
+    options.surrogates.count = surrogate_count_option(args->surrogates, 39);
     if (args->seed) {
       const long long seed = integer_option("--seed", *args->seed, LLONG_MIN);
       options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer

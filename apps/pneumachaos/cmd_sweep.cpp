@@ -99,11 +99,13 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
   cmd->add_flag("--wolf", a.wolf, "also run Wolf's estimator on every record (slower)");
   cmd->add_option("--surrogates", a.surrogates,
                   "IAAFT surrogates per record for the verdict's test against linear noise, as "
-                  "in `analyze` (default 0 = off; 39 add about 1.2 s of CPU per 10 s run)");
+                  "in `analyze`: 0 (default, off) or 19 to 999; 39 add about 1.2 s of CPU per 10 s "
+                  "run");
   add_model_exponent_options(cmd, a.model);
   cmd->add_option("--replay", a.replay,
-                  "POINT:REPEAT: run only that run of this sweep again (same grid, repeats and "
-                  "seed) and write its record; its runs.csv line goes to standard error");
+                  "POINT:REPEAT: run only that run of this sweep again (same grid, repeats, seed "
+                  "and analysis options such as --surrogates) and write its record; its "
+                  "runs.csv line goes to standard error");
   cmd->add_option("-o,--record", a.record,
                   "with --replay: CSV file for the record (default: standard output)");
 }
@@ -119,7 +121,7 @@ SweepSpec sweep_spec_from(const SweepArgs& a) {
   spec.repeats = a.repeats.value_or(file.repeats.value_or(5));
   spec.seed = a.seed.value_or(file.seed.value_or(1));
   spec.wolf = a.wolf;
-  spec.surrogates = option_or(a.surrogates, "--surrogates", 0, 0);
+  spec.surrogates = surrogate_count_option(a.surrogates, 0);
   spec.model_exponent = a.model;
   return spec;
 }

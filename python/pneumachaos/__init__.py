@@ -187,31 +187,38 @@ def _print_progress():
 
 
 def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
-          progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=1.0,
-          model_measure_s=0.0, model_renormalize_s=0.02):
+          progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=None,
+          model_measure_s=None, model_renormalize_s=None):
     """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
     summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv.
     progress: True prints "sweep: done/total runs" at most once a second, False prints
     nothing, a callable is called as progress(done, total) after every run. The rest are the
     CLI's --wolf, --surrogates and --model-exponent with --model-transient, --model-measure
     and --model-renormalize (docs/sweep.md): e.g. model_exponent=True stores each run's model
-    exponent, so the verdict can be checked against it (scripts/verdict_vs_model.py)."""
+    exponent, so the verdict can be checked against it (scripts/verdict_vs_model.py); the
+    model settings need model_exponent=True (defaults 1 s, 0 = the rest of the run, 0.02 s)."""
     if not out:
         raise ValueError("sweep: out: a directory for the results is required")
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
                         ("surrogates", surrogates)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
+    if surrogates != 0 and not 19 <= surrogates <= 999:  # as the command line (docs/sweep.md)
+        raise ValueError(f"sweep: surrogates: 0 (off) or 19 to 999, got {surrogates}")
     if progress is True:
         progress = _print_progress()
     elif progress is False:
         progress = None
     elif not callable(progress):
         raise ValueError(f"sweep: progress: expected True, False or a callable, got {progress!r}")
-    model = _core.ModelExponentSpec()
+    model = _core.ModelExponentSpec()  # the command line's defaults
     model.enabled = bool(model_exponent)
-    model.transient_s = float(model_transient_s)
-    model.measure_s = float(model_measure_s)
-    model.renormalize_s = float(model_renormalize_s)
+    for name, value in (("transient_s", model_transient_s), ("measure_s", model_measure_s),
+                        ("renormalize_s", model_renormalize_s)):
+        if value is None:
+            continue
+        if not model.enabled:
+            raise ValueError(f"sweep: model_{name}: needs model_exponent=True")
+        setattr(model, name, float(value))
     return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
                        int(threads), bool(resume), progress, bool(wolf), int(surrogates), model)

@@ -130,9 +130,10 @@ def test_sweep_with_surrogates_and_the_model_exponent(tmp_path):
     says so, and every run stores a finite model exponent."""
     import csv
     s = pc.Scenario.default().set("run.duration_s", 2.0)
-    pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=1, out=str(tmp_path / "m"),
-             threads=2, progress=False, surrogates=19, model_exponent=True,
-             model_transient_s=0.5)
+    summary = pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=1,
+                       out=str(tmp_path / "m"), threads=2, progress=False, surrogates=19,
+                       model_exponent=True, model_transient_s=0.5)
+    assert 0 <= summary["model_chaos_full_points"] <= summary["model_chaos_any_points"] <= 2
     spec = json.loads((tmp_path / "m" / "summary.json").read_text())["spec"]
     assert spec["surrogates"] == 19 and spec["model_exponent"] is True
     with open(tmp_path / "m" / "runs.csv", newline="") as f:
@@ -140,6 +141,10 @@ def test_sweep_with_surrogates_and_the_model_exponent(tmp_path):
     assert len(rows) == 2 and all(math.isfinite(float(r["lambda_model_per_s"])) for r in rows)
     with pytest.raises(ValueError, match="surrogates"):
         pc.sweep(s, out=str(tmp_path / "bad"), surrogates=-1)
+    with pytest.raises(ValueError, match="0 \\(off\\) or 19 to 999"):
+        pc.sweep(s, out=str(tmp_path / "bad"), surrogates=5)
+    with pytest.raises(ValueError, match="model_transient_s: needs model_exponent=True"):
+        pc.sweep(s, out=str(tmp_path / "bad"), model_transient_s=0.5)
     with pytest.raises(ValueError, match="transient"):
         pc.sweep(s, grid=["circuit.S2_mm2=0.05:0.05:0.15"], repeats=1, out=str(tmp_path / "t"),
                  progress=False, model_exponent=True, model_transient_s=5.0)
