@@ -83,6 +83,19 @@ TEST(Surrogates, ShortRecordsAndZeroCountAreNotRunAndSaySo) {
   EXPECT_THROW(surrogate_test(henon_map(4000), p, o), Error);
 }
 
+TEST(Surrogates, CountIsOffOrEnoughForATestAtFivePercent) {
+  // 1/(N+1) <= 0.05 needs N >= 19; every caller (analyze, sweep, Python) goes through this.
+  for (std::size_t n : {std::size_t{0}, kMinSurrogates, std::size_t{39}, kMaxSurrogates}) {
+    EXPECT_NO_THROW(check_surrogate_count(n, "n")) << n;
+  }
+  for (std::size_t n : {std::size_t{1}, kMinSurrogates - 1, kMaxSurrogates + 1}) {
+    EXPECT_THROW(check_surrogate_count(n, "n"), Error) << n;
+  }
+  SurrogateOptions o;
+  o.count = 18;
+  EXPECT_THROW(surrogate_test(henon_map(4000), PredictionOptions{}, o), Error);
+}
+
 TEST(ZeroOne, ChaosNearOnePeriodicNearZero) {
   // Gottwald & Melbourne 2004/2009: K -> 1 for the chaotic logistic map, -> 0 for periodic.
   const ZeroOneResult chaos = zero_one_test(logistic(5000, 3.97), 1);

@@ -34,9 +34,8 @@ long long integer_option(const std::string& name, const std::string& text, long 
 std::size_t option_or(const std::optional<std::string>& text, const std::string& name,
                       long long min, std::size_t automatic);
 
-/// --surrogates of `analyze` and `sweep`: 0 (off) or kMinSurrogates..kMaxSurrogates, else
-/// an Error naming the option; `automatic` when not given.
-inline constexpr std::size_t kMinSurrogates = 19, kMaxSurrogates = 999;
+/// --surrogates of `analyze` and `sweep`, checked by check_surrogate_count (an Error naming
+/// the option); `automatic` when not given.
 std::size_t surrogate_count_option(const std::optional<std::string>& text, std::size_t automatic);
 
 Action add_simulate(CLI::App& app);

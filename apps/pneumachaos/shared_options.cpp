@@ -3,6 +3,7 @@
 #include <charconv>
 #include <fmt/format.h>
 
+#include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos::cli {
@@ -43,14 +44,7 @@ std::size_t option_or(const std::optional<std::string>& text, const std::string&
 std::size_t surrogate_count_option(const std::optional<std::string>& text,
                                    std::size_t automatic) {
   const std::size_t n = option_or(text, "--surrogates", 0, automatic);
-  // "Below every surrogate" happens by chance with probability 1/(N+1): 19 is the least
-  // count for a test at 5 %; past 999 (0.1 %) only the time grows, by ~13 s per 1e4 samples.
-  if (n != 0 && (n < kMinSurrogates || n > kMaxSurrogates)) {
-    throw Error("--surrogates",
-                fmt::format("{} is out of range: 0 (off) or {} to {} (fewer cannot reject at "
-                            "5 %: the record beats them all by chance with probability 1/(N+1))",
-                            n, kMinSurrogates, kMaxSurrogates));
-  }
+  check_surrogate_count(n, "--surrogates");
   return n;
 }
 

@@ -203,8 +203,6 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
                         ("surrogates", surrogates)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
-    if surrogates != 0 and not 19 <= surrogates <= 999:  # as the command line (docs/sweep.md)
-        raise ValueError(f"sweep: surrogates: 0 (off) or 19 to 999, got {surrogates}")
     if progress is True:
         progress = _print_progress()
     elif progress is False:

@@ -73,7 +73,16 @@ std::pair<std::size_t, std::size_t> end_matched_segment(std::span<const double> 
 
 }  // namespace
 
+void check_surrogate_count(std::size_t count, const std::string& where) {
+  if (count == 0 || (count >= kMinSurrogates && count <= kMaxSurrogates)) return;
+  throw Error(where, fmt::format("{} is out of range: 0 (off) or {} to {} (fewer cannot reject "
+                                 "at 5 %: the record beats them all by chance with "
+                                 "probability 1/(N+1))",
+                                 count, kMinSurrogates, kMaxSurrogates));
+}
+
 void SurrogateOptions::validate() const {
+  check_surrogate_count(count, "surrogates.count");
   if (max_iterations == 0) throw Error("surrogates.max_iterations", "must be at least 1");
   if (!(spectral_tolerance >= 0.0)) {
     throw Error("surrogates.spectral_tolerance", "must be a number >= 0");

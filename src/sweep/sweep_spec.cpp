@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
@@ -48,6 +49,7 @@ void SweepSpec::validate() const {
   if (runs() > 10'000'000)
     throw Error("grid", fmt::format("{} runs is more than 10 million", runs()));
   base.validate();
+  check_surrogate_count(surrogates, "surrogates");  // up front, not as every run's failure
   model_exponent.validate(base.run.duration_s);
 }
 
