@@ -8,7 +8,11 @@
 #include <regex>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/report/figures.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 
 namespace pneumachaos {
@@ -54,180 +58,194 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
     ++links;
   }
   EXPECT_GE(links, 11u * 4);  // image, SVG, script and data of each figure
-  EXPECT_EQ(r.claims.size(), 15u);
+  EXPECT_EQ(r.claims.size(), 22u);
   EXPECT_NE(html.find("<th>figure</th>"), std::string::npos);
   for (const Claim& c : r.claims) EXPECT_NE(html.find(c.verdict), std::string::npos);
+  // The page says where it stands, first: the headline in the title and the first paragraph.
+  const std::string headline = claims_headline(count_claims(r.claims));
+  const auto title = html.find("<title>"), first = html.find(headline);
+  EXPECT_NE(html.find(headline.substr(0, headline.find(" ("))), std::string::npos);
+  EXPECT_LT(title, first);
+  EXPECT_LT(first, html.find("<table>"));
+  // The scenario block shows what the maps ran with: the seal scatter and bore texture.
+  EXPECT_NE(html.find("friction_rel_sd = 0.03"), std::string::npos);
+  EXPECT_NE(html.find("texture_rel = 0.02"), std::string::npos);
+  // Fig. 3 labels the example's record by the page's own verdict, not as "chaotic".
+  EXPECT_NE(slurp(dir / "figures" / "fig3_record1.dat").find("judged"), std::string::npos);
+  // claims.json holds the same rows.
+  const auto j = nlohmann::json::parse(slurp(dir / "claims.json"));
+  ASSERT_EQ(j["claims"].size(), r.claims.size());
+  for (std::size_t i = 0; i < r.claims.size(); ++i)
+    EXPECT_EQ(j["claims"][i]["verdict"], r.claims[i].verdict);
   std::filesystem::remove_all(dir);
 }
 
-SweepSummary map_with(std::size_t stick_slip, std::size_t full, std::size_t any) {
+SweepSummary map_with(std::size_t stick_slip, std::size_t full, std::size_t chaotic_runs) {
   SweepSummary s;
   s.stick_slip_points = stick_slip;
   s.chaos_full_points = full;
-  s.chaos_any_points = any;
+  s.points = 780;
+  s.runs = 3900;
+  // The chaotic runs spread over points of five runs each.
+  for (std::size_t i = 0; i < 780; ++i) {
+    PointSummary p;
+    p.point = i;
+    p.runs = 5;
+    const std::size_t here = std::min<std::size_t>(5, chaotic_runs > 5 * i ? chaotic_runs - 5 * i : 0);
+    p.chaos_incidence = static_cast<double>(here) / 5.0;
+    s.per_point.push_back(p);
+  }
   return s;
+}
+
+const Claim& row(const std::vector<Claim>& claims, const std::string& id) {
+  for (const Claim& c : claims)
+    if (c.id == id) return c;
+  throw std::runtime_error("no row " + id);
 }
 
 TEST(Claims, FollowTheSweepResults) {
   ClaimInputs in;
-  in.base = map_with(32, 11, 43);
-  in.high_ps = map_with(26, 0, 39);
-  in.double_m = map_with(37, 8, 56);
-  in.triple_m = map_with(52, 5, 49);
-  in.example_lambda = 2.7;
-  in.example_uncertainty = 0.3;
-  in.example_chaotic = true;
+  in.base = map_with(320, 30, 400);
+  in.high_ps = map_with(260, 10, 300);
+  in.double_m = map_with(370, 8, 500);
+  in.triple_m = map_with(520, 0, 100);
   auto claims = evaluate_claims(in);
-  ASSERT_EQ(claims.size(), 15u);
-  EXPECT_EQ(claims[1].verdict, "agrees");     // 32 -> 26: -19 %
-  EXPECT_EQ(claims[2].verdict, "agrees");     // 11 -> 0
-  EXPECT_EQ(claims[3].verdict, "agrees");     // 32 -> 37, 8 always chaotic
-  EXPECT_EQ(claims[4].verdict, "disagrees");  // chaos at 4.5 kg
-  EXPECT_EQ(claims[5].verdict, "agrees");
+  EXPECT_EQ(row(claims, "fig5_chaos_reduced").verdict, kAgrees);      // 400 -> 300 runs
+  EXPECT_EQ(row(claims, "fig5_full_chaos_halved").verdict, kAgrees);  // 30 -> 10
+  EXPECT_EQ(row(claims, "fig6_stick_slip_grows").verdict, kAgrees);   // 320 -> 370
+  EXPECT_EQ(row(claims, "fig6_few_always_chaotic").verdict, kAgrees);  // 8
+  EXPECT_EQ(row(claims, "fig6_triple_no_chaos").verdict, kAgrees);     // 100 <= allowance
   // Change the inputs: the table changes with them.
-  in.high_ps = map_with(31, 9, 40);
-  in.triple_m = map_with(60, 0, 0);
-  in.example_uncertainty = 2.0;
+  in.high_ps = map_with(330, 20, 420);
+  in.double_m = map_with(300, 12, 500);
+  in.triple_m = map_with(520, 0, 900);
   claims = evaluate_claims(in);
-  EXPECT_EQ(claims[1].verdict, "disagrees");
-  EXPECT_EQ(claims[1].ours, "32 -> 31 points (-3 %)");
-  EXPECT_EQ(claims[2].verdict, "disagrees");
-  EXPECT_EQ(claims[4].verdict, "agrees");
-  EXPECT_EQ(claims[5].verdict, "disagrees");
-  in.example_uncertainty = 0.3;
-  in.example_chaotic = false;  // a periodic record's curve can rise too
-  EXPECT_EQ(evaluate_claims(in)[5].verdict, "disagrees");
+  EXPECT_EQ(row(claims, "fig5_chaos_reduced").verdict, kDisagrees);
+  EXPECT_EQ(row(claims, "fig5_full_chaos_halved").verdict, kDisagrees);
+  EXPECT_EQ(row(claims, "fig6_stick_slip_grows").verdict, kDisagrees);
+  EXPECT_EQ(row(claims, "fig6_few_always_chaotic").verdict, kDisagrees);
+  const Claim& none = row(claims, "fig6_triple_no_chaos");
+  EXPECT_EQ(none.verdict, kDisagrees);
+  EXPECT_LT(none.margin, 0.0);
+  EXPECT_NE(none.why.find("900 of 3900 runs"), std::string::npos);
   in.high_ps.reset();
-  EXPECT_EQ(evaluate_claims(in)[1].verdict, "not reproduced");
+  EXPECT_EQ(row(evaluate_claims(in), "fig5_chaos_reduced").verdict, kNotReproduced);
 }
 
-// A column of a map (S2 fastest) from stick-slip and chaos incidences.
-std::vector<PointSummary> column(const std::vector<double>& stick, const std::vector<double>& chaos) {
-  std::vector<PointSummary> pts(stick.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    pts[i].point = i;
-    pts[i].stick_slip_incidence = stick[i];
-    pts[i].chaos_incidence = chaos[i];
-  }
-  return pts;
-}
-
-TEST(ClaimRules, ChaosNearTheBorderFailsForChaosFarFromIt) {
-  // Stick-slip in the first two S2 rows; chaos right above them: near the border.
-  const std::vector<double> stick = {1, 1, 0, 0, 0, 0, 0, 0, 0, 0};
-  auto near = chaos_location(column(stick, {0, 0, 1, 0, 0, 0, 0, 0, 0, 0}), 10);
-  EXPECT_DOUBLE_EQ(near.near_border, 1.0);
-  EXPECT_TRUE(chaos_near_border(near));
-  // The same amount of chaos high up the S2 axis (every S1 > S2 still): far from the border.
-  auto far = chaos_location(column(stick, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0}), 10);
-  EXPECT_DOUBLE_EQ(far.near_border, 0.0);
-  EXPECT_FALSE(chaos_near_border(far));
-  // Chaos near the border but over most of the map: not a limited region.
-  auto wide = chaos_location(column(stick, {1, 1, 1, 1, 1, 1, 0, 0, 0, 0}), 10);
-  EXPECT_FALSE(chaos_near_border(wide));
-}
-
-TEST(ClaimRules, ExponentNeedsAChaoticRecord) {
-  EXPECT_TRUE(positive_exponent_of_chaos(3.0, 0.5, true));
-  EXPECT_FALSE(positive_exponent_of_chaos(3.0, 0.5, false));  // periodic, curve rising anyway
-  EXPECT_FALSE(positive_exponent_of_chaos(3.0, 1.5, true));
-}
-
-TEST(ClaimRules, AcfOfASineDoesNotConvergeButNoiseDoes) {
-  const double rate = 100.0;
-  std::vector<double> sine(500), decaying(500);
-  for (std::size_t k = 0; k < sine.size(); ++k) {
-    sine[k] = std::cos(2 * M_PI * 6.3 * k / rate);
-    decaying[k] = std::exp(-5.0 * k / rate) * std::cos(2 * M_PI * 6.3 * k / rate);
-  }
-  EXPECT_FALSE(acf_converged(acf_envelope_after(sine, rate, 1.0)));
-  EXPECT_TRUE(acf_converged(acf_envelope_after(decaying, rate, 1.0)));
-  EXPECT_FALSE(spectrum_without_dominant_peak(0.31));
-  EXPECT_TRUE(spectrum_without_dominant_peak(0.08));
-}
-
-TEST(ClaimRules, CircuitContrastAndSpeedOrder) {
-  EXPECT_TRUE(fluctuates_much_more({0.3, 0.4}, {0.01, 0.05}));
-  EXPECT_FALSE(fluctuates_much_more({0.3, 0.1}, {0.01, 0.05}));  // 0.1 < 3 x 0.05
-  EXPECT_TRUE(strictly_increasing({38, 66, 110}));
-  EXPECT_FALSE(strictly_increasing({38, 66, 60}));
-  std::vector<double> steady(100, 2.0), wobbly(100, 2.0);
-  for (std::size_t k = 0; k < wobbly.size(); ++k) wobbly[k] += (k % 2 ? 1.0 : -1.0);
-  EXPECT_DOUBLE_EQ(relative_fluctuation(steady, 10), 0.0);
-  EXPECT_NEAR(relative_fluctuation(wobbly, 10), 0.5, 1e-12);
-}
-
-TEST(ClaimRules, LowSpeedSlopeSeesAStribeckDip) {
-  std::vector<double> v, falling, rising;
-  for (int k = 1; k <= 50; ++k) {
-    v.push_back(1e-3 * k);
-    falling.push_back(20.0 - 100.0 * 1e-3 * k);  // Stribeck: friction falls with speed
-    rising.push_back(10.0 + 100.0 * 1e-3 * k);   // viscous only
-  }
-  EXPECT_NEAR(low_speed_slope(v, falling, 0.05), -100.0, 1e-9);
-  EXPECT_NEAR(low_speed_slope(v, rising, 0.05), 100.0, 1e-9);
-}
-
-// A memoryless friction curve F(v) traces no loop; a lagging one does; a record that rests
-// at zero speed is a standstill, not "without a standstill".
-TEST(ClaimRules, FrictionLoopNeedsHysteresisAndMotion) {
-  std::vector<double> v, memoryless, lagging, resting;
-  const double dt = 1e-3;
-  for (int k = 0; k < 4000; ++k) {
-    const double t = k * dt, w = 2 * M_PI * 4.0;
-    v.push_back(0.09 + 0.08 * std::sin(w * t));
-    memoryless.push_back(20.0 - 50.0 * v.back());
-    lagging.push_back(20.0 - 50.0 * (0.09 + 0.08 * std::sin(w * (t - 0.01))));
-    resting.push_back(std::max(0.0, 0.08 * std::sin(w * t)));
-  }
-  EXPECT_FALSE(loops_without_standstill(measure_friction_loop(v, memoryless)));
-  const FrictionLoop l = measure_friction_loop(v, lagging);
-  EXPECT_TRUE(loops_without_standstill(l));
-  EXPECT_EQ(l.hysteretic_bins, l.bins);
-  const FrictionLoop r = measure_friction_loop(resting, lagging);
-  EXPECT_GT(r.standstill_share, 0.4);
-  EXPECT_FALSE(loops_without_standstill(r));
-}
-
-TEST(ClaimRules, FoldAndStretchBands) {
-  FoldStretch f{0.8, 40, 12.0, 1.0, -5.0, 2.0};
-  EXPECT_TRUE(folded_and_stretched(f));
-  f.maxima_in_fold_band = 0.3;  // the trajectory turns back elsewhere
-  EXPECT_FALSE(folded_and_stretched(f));
-  f = FoldStretch{0.8, 40, 2.0, 1.0, -5.0, 2.0};  // stretching not significant
-  EXPECT_FALSE(folded_and_stretched(f));
-  f = FoldStretch{0.8, 40, 12.0, 1.0, 10.0, 2.0};  // the fold band stretches as much
-  EXPECT_FALSE(folded_and_stretched(f));
-  // A sine of amplitude 160 mm/s around 0 turns back at 160 mm/s, in the fold band, but
-  // nearby trajectories of a periodic orbit do not separate anywhere.
-  std::vector<double> sine(6000);
-  for (std::size_t k = 0; k < sine.size(); ++k) sine[k] = 0.16 * std::sin(2 * M_PI * 3.0 * k / 1000.0);
-  const FoldStretch s = measure_fold_stretch(sine, 1000.0, 3, 40, 80);
-  EXPECT_GT(s.maxima_in_fold_band, 0.9);
-  EXPECT_FALSE(folded_and_stretched(s));
-}
-
-TEST(Claims, DampingAndSignRuleFollowTheirInputs) {
+// Misreading: the paper says both that Ps 0.30 shrinks the stick-slip region by about 20 % and
+// that it extends it; the old rule scored one reading silently.
+TEST(Claims, TheContradictionIsShownAndNotScored) {
   ClaimInputs in;
-  in.higher_ps = DampingChange{-99, -98, -96, -95, 35.0, 30.0};
-  in.heavier = DampingChange{-99, -98, -96, -95, 35.0, 40.0};
-  in.sign_rule = SignRuleCounts{18, 15, 24, 24};
+  in.base = map_with(320, 30, 400);
+  for (std::size_t after : {256u, 400u}) {
+    in.high_ps = map_with(after, 10, 300);
+    const auto claims = evaluate_claims(in);
+    const Claim& c = row(claims, "fig5_stick_slip");
+    EXPECT_EQ(c.verdict, kContradictory);
+    EXPECT_FALSE(c.scored());
+    EXPECT_NE(c.quote.find("decreases by about 20%"), std::string::npos);
+    EXPECT_NE(c.quote.find("extends the stick-slip region"), std::string::npos);
+    EXPECT_EQ(count_claims(claims).contradictory, 1u);
+  }
+}
+
+// Misreading: the exponent row was tied to the whole regime verdict; the paper's claim is that
+// the exponent is positive. They are two rows now.
+TEST(Claims, ExponentAndVerdictAreSeparateRows) {
+  ClaimInputs in;
+  in.example_lambda = 3.0;
+  in.example_uncertainty = 0.3;
+  in.example_chaotic = false;
+  in.example_regime = "stick-slip";
   auto claims = evaluate_claims(in);
-  EXPECT_EQ(claims[11].verdict, "agrees");
-  EXPECT_EQ(claims[12].verdict, "agrees");
-  EXPECT_EQ(claims[10].verdict, "agrees");
-  in.higher_ps = DampingChange{-99, -98, -96, -96, 35.0, 36.0};  // b1 unchanged, less damped
-  in.heavier = DampingChange{-99, -100, -96, -95, 35.0, 40.0};   // a1 falls
-  in.sign_rule = SignRuleCounts{18, 10, 24, 24};                 // damped points oscillate
+  const Claim& e = row(claims, "fig7_exponent");
+  EXPECT_EQ(e.verdict, kAgrees);
+  EXPECT_NE(e.ours.find("4.33 +- 0.43 bits/s"), std::string::npos);  // 3 / ln 2
+  EXPECT_EQ(row(claims, "fig7_verdict").verdict, kDisagrees);
+  in.example_uncertainty = 2.0;
+  in.example_chaotic = true;
   claims = evaluate_claims(in);
-  EXPECT_EQ(claims[11].verdict, "disagrees");
-  EXPECT_EQ(claims[12].verdict, "disagrees");
-  EXPECT_EQ(claims[10].verdict, "disagrees");
-  EXPECT_EQ(claims[7].verdict, "not reproduced");  // no ACF given
-  ASSERT_EQ(claims.size(), 15u);
-  EXPECT_EQ(claims[13].verdict, "not reproduced");  // no fold/stretch measurement
-  in.friction_loop = FrictionLoop{0.3, 10, 10};      // loops, but rests 30 % of the time
-  EXPECT_EQ(evaluate_claims(in)[14].verdict, "disagrees");
+  EXPECT_EQ(row(claims, "fig7_exponent").verdict, kDisagrees);
+  EXPECT_EQ(row(claims, "fig7_verdict").verdict, kAgrees);
+}
+
+// Misreading: at a choked equilibrium the mass multiplies a term that is 0 (eq. 9) or positive
+// by construction (eq. 11), so "load increases a damping coefficient" passed on every model.
+TEST(Claims, TheLoadsDampingCoefficientIsAnIdentityNotAScore) {
+  ClaimInputs in;
+  in.heavier = LoadCoefficients{-98.8, -98.8, -95.5, -92.1};
+  const auto claims = evaluate_claims(in);
+  const Claim& c = row(claims, "eq9_eq11_load_identity");
+  EXPECT_EQ(c.verdict, kIdentity);
+  EXPECT_FALSE(c.scored());
+  EXPECT_EQ(count_claims(claims).identity, 1u);
+}
+
+TEST(Claims, EveryRowQuotesThePaperAndCarriesItsMargin) {
+  ClaimInputs in;
+  in.base = map_with(320, 30, 400);
+  in.high_ps = map_with(260, 10, 300);
+  in.example_peak_share = 0.67;
+  in.example_acf_after_1s = 0.1;
+  in.sign_rule = SignRuleCounts{18, 14, 24, 24, 3};
+  in.meter_in_ps = {{19.6, 28.4, -7.1, -9.9}};
+  const auto claims = evaluate_claims(in);
+  ASSERT_EQ(claims.size(), 22u);
+  for (const Claim& c : claims) {
+    EXPECT_FALSE(c.id.empty());
+    EXPECT_FALSE(c.quote.empty()) << c.id;
+    EXPECT_FALSE(c.where.empty()) << c.id;
+    EXPECT_FALSE(c.reading.empty()) << c.id;
+    EXPECT_FALSE(c.rule.empty()) << c.id;
+    if (c.verdict == kAgrees) EXPECT_GE(c.margin, 0.0) << c.id;
+    if (c.verdict == kDisagrees) {
+      EXPECT_LT(c.margin, 0.0) << c.id;
+      EXPECT_FALSE(c.why.empty()) << c.id;
+    }
+    if (c.verdict == kNotReproduced) EXPECT_FALSE(c.why.empty()) << c.id;
+  }
+  EXPECT_EQ(row(claims, "fig7_spectrum").verdict, kDisagrees);
+  EXPECT_NEAR(row(claims, "fig7_spectrum").margin, (0.25 - 0.67) / 0.25, 1e-12);
+  EXPECT_EQ(row(claims, "sec32_sign_rule").verdict, kDisagrees);  // 14 of 18 < 80 %
+  EXPECT_EQ(row(claims, "eq11_supply_pressure").verdict, kAgrees);
+  const ClaimCount n = count_claims(claims);
+  EXPECT_EQ(n.scored() + n.identity + n.contradictory, claims.size());
+  const auto j = nlohmann::json::parse(claims_json(claims));
+  EXPECT_EQ(j["claims"].size(), claims.size());
+  EXPECT_EQ(j["count"]["agrees"], n.agrees);
+  for (const auto& c : j["claims"]) {
+    for (const char* key : {"id", "paper", "reading", "rule", "ours", "margin", "verdict", "why"})
+      EXPECT_TRUE(c.contains(key)) << key;
+    if (c["verdict"] == kNotReproduced) EXPECT_TRUE(c["margin"].is_null());
+  }
+}
+
+// Misreading: the paper's m is the total moving mass; the maps added the load to a 1.05 kg
+// piston + rod, so "doubled" was x1.59.
+TEST(Claims, LoadLevelsAreTotalMovingMass) {
+  Scenario s = default_scenario();
+  s.set_total_moving_mass(1.5);
+  EXPECT_DOUBLE_EQ(s.total_moving_mass_kg(), 1.5);
+  EXPECT_NEAR(s.load.mass_kg, 1.5 - s.load.piston_mass_kg, 1e-12);
+  Scenario doubled = s;
+  doubled.set_total_moving_mass(3.0);
+  EXPECT_DOUBLE_EQ(doubled.total_moving_mass_kg() / s.total_moving_mass_kg(), 2.0);
+  EXPECT_THROW(s.set_total_moving_mass(0.5), Error);  // below the piston + rod
+  Scenario rigid = simple_rig_scenario();
+  rigid.set_total_moving_mass(4.5);
+  EXPECT_DOUBLE_EQ(rigid.load.mass_kg, 4.5);
+}
+
+// Misreading: the figure labelled (a) meter-in and (b) meter-out; the paper's (a) is meter-out.
+TEST(Claims, Fig2PanelsAreLabelledAsThePapers) {
+  TimeSeries t(1000.0);
+  t.add_channel("v", "m/s", std::vector<double>(10, 0.05));
+  const FigureSpec f = time_responses_figure({{"S2", t}}, {{"S1", t}});
+  const auto a = f.plot.find("(a) meter-out"), b = f.plot.find("(b) meter-in");
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_LT(a, b);
 }
 
 }  // namespace

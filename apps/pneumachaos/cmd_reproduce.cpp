@@ -19,10 +19,8 @@ Action add_reproduce(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads for the sweeps (default: all cores)");
   return [o]() {
     const ReproduceResult r = reproduce(*o);
-    std::size_t agrees = 0;
-    for (const auto& c : r.claims) agrees += c.verdict == "agrees" ? 1 : 0;
-    fmt::print("reproduce: {} figures, {} of {} claims agree; report: {}\n", r.figures.size(),
-               agrees, r.claims.size(), r.index_html);
+    fmt::print("reproduce: {} figures; {}; report: {}\n", r.figures.size(),
+               claims_headline(count_claims(r.claims)), r.index_html);
     return kExitOk;
   };
 }

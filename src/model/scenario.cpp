@@ -119,6 +119,20 @@ void Scenario::validate() const {
   }
 }
 
+double Scenario::total_moving_mass_kg() const {
+  return load.mass_kg + (load.coupling == LoadCoupling::kSpring ? load.piston_mass_kg : 0.0);
+}
+
+void Scenario::set_total_moving_mass(double kg) {
+  const double piston = load.coupling == LoadCoupling::kSpring ? load.piston_mass_kg : 0.0;
+  if (!(kg > piston)) {
+    throw Error("load.mass_kg", fmt::format("a total moving mass of {} kg leaves no load on the "
+                                            "{} kg piston + rod (load.piston_mass_kg)",
+                                            kg, piston));
+  }
+  load.mass_kg = kg - piston;
+}
+
 Scenario default_scenario() {
   Scenario s;
   // Seal on the piston + rod: the default's Stribeck curve with generalized Maxwell-slip

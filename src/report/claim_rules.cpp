@@ -1,9 +1,25 @@
+// The rules of the chaotic example's indices, Fig. 2's transients, the damping trend and the
+// friction slope (declared in claim_rules.hpp).
 #include "pneumachaos/report/claim_rules.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace pneumachaos {
+
+RuleResult rule_result(double margin, std::string why) {
+  return {margin, margin >= 0.0 ? std::string() : std::move(why)};
+}
+
+RuleResult both(const RuleResult& a, const RuleResult& b) {
+  if (!a.evaluated()) return a;
+  if (!b.evaluated()) return b;
+  RuleResult r = a.margin <= b.margin ? a : b;
+  if (r.passes()) r.why.clear();
+  return r;
+}
 
 double acf_envelope_after(const std::vector<double>& r, double rate_Hz, double after_s) {
   double m = 0.0;
@@ -12,66 +28,87 @@ double acf_envelope_after(const std::vector<double>& r, double rate_Hz, double a
   return m;
 }
 
-bool acf_converged(double envelope_after_1s) { return envelope_after_1s <= 0.2; }
-
-bool spectrum_without_dominant_peak(double peak_share) { return peak_share <= 0.25; }
-
-bool positive_exponent_of_chaos(double lambda, double uncertainty, bool record_chaotic) {
-  return record_chaotic && lambda > 0.0 && lambda > 3.0 * uncertainty;
+RuleResult acf_converged(double envelope) {
+  return rule_result((0.2 - envelope) / 0.2,
+                 fmt::format("the autocorrelation still reaches {:.2f} after 1 s, above 0.2",
+                             envelope));
 }
 
-ChaosLocation chaos_location(const std::vector<PointSummary>& pts, std::size_t n2) {
-  const auto stick = [&](std::size_t i) { return pts[i].stick_slip_incidence >= 0.5; };
-  // A point is near the border when a stick-slip/non-stick-slip change along S2 (same S1)
-  // lies between two cells of which one is within one step of it.
-  const auto near = [&](std::size_t i) {
-    const std::size_t j = i % n2, row = i - j;
-    for (std::size_t k = (j >= 2 ? j - 2 : 0); k + 1 < n2 && k <= j + 1; ++k) {
-      if (stick(row + k) != stick(row + k + 1)) return true;
-    }
-    return false;
-  };
-  ChaosLocation c;
-  double near_sum = 0.0;
-  std::size_t chaotic = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (pts[i].chaos_incidence <= 0.0) continue;
-    ++chaotic;
-    c.total += pts[i].chaos_incidence;
-    if (near(i)) near_sum += pts[i].chaos_incidence;
+RuleResult spectrum_without_dominant_peak(double peak_share) {
+  return rule_result((0.25 - peak_share) / 0.25,
+                 fmt::format("one spectral line holds {:.0f} % of the power, more than a quarter",
+                             100 * peak_share));
+}
+
+RuleResult positive_exponent(double lambda, double uncertainty) {
+  const double scale = 3.0 * std::max(uncertainty, 1e-12);
+  return rule_result((lambda - scale) / scale,
+                 fmt::format("the exponent {:.2f} 1/s is not above 3 times its uncertainty "
+                             "({:.2f} 1/s)",
+                             lambda, uncertainty));
+}
+
+RuleResult judged_chaotic(bool chaotic, const std::string& regime) {
+  return rule_result(chaotic ? 1.0 : -1.0,
+                 "the record's verdict is " + regime + ", not chaotic");
+}
+
+Settling settling(const std::vector<double>& v, double rate_Hz, double final_s) {
+  Settling s;
+  if (v.empty() || !(rate_Hz > 0.0)) return s;
+  const auto n = v.size();
+  const auto tail = std::clamp<std::size_t>(static_cast<std::size_t>(final_s * rate_Hz), 1, n);
+  double sum = 0.0;
+  for (std::size_t k = n - tail; k < n; ++k) sum += v[k];
+  s.final_value = sum / static_cast<double>(tail);
+  std::size_t start = 0;
+  while (start < n && v[start] == 0.0) ++start;  // at rest until the breakaway
+  std::size_t last_out = start;
+  for (std::size_t k = start; k < n; ++k)
+    if (std::abs(v[k] - s.final_value) > 0.05 * std::abs(s.final_value)) last_out = k;
+  s.start_s = static_cast<double>(start) / rate_Hz;
+  // Out of the band within the averaging window: it has not settled in this record.
+  s.settled = last_out + tail < n;
+  s.settle_s = static_cast<double>(s.settled ? last_out : n) / rate_Hz;
+  s.decay_rate_per_s = std::log(20.0) / std::max(s.settle_s - s.start_s, 1.0 / rate_Hz);
+  return s;
+}
+
+RuleResult attenuates_faster(const std::vector<double>& fast, const std::vector<double>& slow) {
+  if (fast.empty() || slow.empty()) return {kNaN, "no responses"};
+  const double slowest_fast = *std::min_element(fast.begin(), fast.end());
+  const double fastest_slow = *std::max_element(slow.begin(), slow.end());
+  const double ratio = slowest_fast / fastest_slow;
+  return rule_result(std::log2(ratio) - 1.0,
+                 fmt::format("the slowest-settling meter-in response decays only {:.2f} times as "
+                             "fast as the fastest meter-out one (twice needed)",
+                             ratio));
+}
+
+RuleResult rises_with_area(const std::vector<double>& x) {
+  if (x.size() < 2) return {kNaN, "fewer than two openings"};
+  double m = INFINITY;
+  for (std::size_t k = 1; k < x.size(); ++k) m = std::min(m, x[k] / x[k - 1] - 1.0);
+  return rule_result(m, "the speed does not rise with every larger opening");
+}
+
+RuleResult damping_improves(const std::vector<DampingPair>& points) {
+  if (points.empty()) return {kNaN, "no steady motion to linearise"};
+  RuleResult r{INFINITY, ""};
+  for (const DampingPair& p : points) {
+    const double b1 = (p.b1_after - p.b1_before) / std::max(std::abs(p.b1_before), 1e-12);
+    const double re =
+        (p.max_re_before - p.max_re_after) / std::max(std::abs(p.max_re_before), 1e-12);
+    r = both(r, rule_result(b1, fmt::format("b1 falls ({:.1f} -> {:.1f} N s/m)", p.b1_before,
+                                        p.b1_after)));
+    r = both(r, rule_result(re, fmt::format("the full model's largest real part rises ({:.2f} -> "
+                                        "{:.2f} 1/s)",
+                                        p.max_re_before, p.max_re_after)));
   }
-  if (c.total > 0.0) c.near_border = near_sum / c.total;
-  if (!pts.empty()) c.map_share = static_cast<double>(chaotic) / pts.size();
-  return c;
+  return r;
 }
 
-bool chaos_near_border(const ChaosLocation& c) {
-  return c.total > 0.0 && c.near_border >= 0.75 && c.map_share <= 0.25;
-}
-
-double relative_fluctuation(const std::vector<double>& x, std::size_t from) {
-  if (from >= x.size()) return 0.0;
-  double sum = 0.0, sq = 0.0;
-  for (std::size_t k = from; k < x.size(); ++k) sum += x[k];
-  const double n = static_cast<double>(x.size() - from), mean = sum / n;
-  for (std::size_t k = from; k < x.size(); ++k) sq += (x[k] - mean) * (x[k] - mean);
-  return mean == 0.0 ? INFINITY : std::sqrt(sq / n) / std::abs(mean);
-}
-
-bool fluctuates_much_more(const std::vector<double>& considerable,
-                          const std::vector<double>& slight) {
-  if (considerable.empty() || slight.empty()) return false;
-  return *std::min_element(considerable.begin(), considerable.end()) >=
-         3.0 * *std::max_element(slight.begin(), slight.end());
-}
-
-bool strictly_increasing(const std::vector<double>& x) {
-  for (std::size_t k = 1; k < x.size(); ++k)
-    if (!(x[k] > x[k - 1])) return false;
-  return x.size() >= 2;
-}
-
-double low_speed_slope(const std::vector<double>& v, const std::vector<double>& F, double v_max) {
+LineFit low_speed_line(const std::vector<double>& v, const std::vector<double>& F, double v_max) {
   double n = 0, sv = 0, sf = 0, svv = 0, svf = 0;
   for (std::size_t k = 0; k < v.size() && k < F.size(); ++k) {
     if (v[k] <= 0.0 || v[k] > v_max) continue;
@@ -81,8 +118,19 @@ double low_speed_slope(const std::vector<double>& v, const std::vector<double>& 
     svv += v[k] * v[k];
     svf += v[k] * F[k];
   }
+  LineFit f;
+  f.n = static_cast<std::size_t>(n);
   const double d = n * svv - sv * sv;
-  return n < 3 || d <= 0.0 ? NAN : (n * svf - sv * sf) / d;
+  if (n < 3 || d <= 0.0) return f;
+  f.slope = (n * svf - sv * sf) / d;
+  f.intercept = (sf - f.slope * sv) / n;
+  return f;
+}
+
+RuleResult negative_low_speed_slope(const LineFit& line, double v_max) {
+  if (std::isnan(line.slope)) return {kNaN, "too few samples at low speed"};
+  const double drop = -line.slope * v_max / std::max(std::abs(line.intercept), 1e-12);
+  return rule_result(drop, fmt::format("the friction rises with speed ({:.0f} N s/m)", line.slope));
 }
 
 }  // namespace pneumachaos

@@ -39,23 +39,25 @@ std::string plot_columns(const std::string& file, const std::vector<LabelledReco
 
 }  // namespace
 
-FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
-                                 const std::vector<LabelledRecord>& meter_out) {
+FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
+                                 const std::vector<LabelledRecord>& meter_in) {
   FigureSpec f;
   f.name = "fig2_time_responses";
   f.caption =
-      "Fig. 2: velocity responses of the simple rig (one rigid mass, classic friction, as "
-      "the paper's model) after the valve switches: (a) meter-in, (b) meter-out.";
-  f.data = {{"fig2_meter_in.dat", records_table(meter_in, 3.0)},
-            {"fig2_meter_out.dat", records_table(meter_out, 3.0)}};
+      "Fig. 2: velocity responses of the paper's model (one rigid mass, eq. (4) friction) after "
+      "the valve switches, under its own assumptions: (a) meter-out with the supply valve open "
+      "wide (P1 = Ps, Section 3.2), (b) meter-in with the rod side open to atmosphere "
+      "(Section 3.3).";
+  f.data = {{"fig2_meter_out.dat", records_table(meter_out, 3.0)},
+            {"fig2_meter_in.dat", records_table(meter_in, 3.0)}};
   f.height = 640;
   f.plot =
       "set multiplot layout 2,1\nset grid\nset xlabel 'time [s]'\nset ylabel 'velocity [mm/s]'\n"
       "set key outside right\n"
-      "set title '(a) meter-in: supply speed controller S1'\nplot " +
-      plot_columns("fig2_meter_in.dat", meter_in) +
-      "\nset title '(b) meter-out: exhaust speed controller S2'\nplot " +
-      plot_columns("fig2_meter_out.dat", meter_out) + "\nunset multiplot";
+      "set title '(a) meter-out: exhaust speed controller S2, P1 = Ps'\nplot " +
+      plot_columns("fig2_meter_out.dat", meter_out) +
+      "\nset title '(b) meter-in: supply speed controller S1, P2 = Pa'\nplot " +
+      plot_columns("fig2_meter_in.dat", meter_in) + "\nunset multiplot";
   return f;
 }
 

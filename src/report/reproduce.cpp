@@ -49,39 +49,51 @@ SimulationResult run(Scenario s, double duration_s) {
   return r;
 }
 
-// The paper's model for Fig. 2: one rigid mass, eq. (4) friction, volumes following the piston.
-Scenario paper_model(CircuitKind kind, double S1_mm2, double S2_mm2) {
+// The paper's model for Fig. 2 under the paper's own assumptions: one rigid mass, eq. (4)
+// friction, volumes following the piston; meter-out with P1 = Ps (Section 3.2: the supply
+// valve open wide) and meter-in with the rod side at atmosphere (Section 3.3).
+constexpr double kOpenValve_mm2 = 20.0;  // a fully open 1/4" valve: its pressure drop is < 1e-4
+Scenario paper_model(CircuitKind kind, double S_mm2) {
   Scenario s = simple_rig_scenario();
   s.friction.kind = FrictionKind::kClassic;
   s.circuit.kind = kind;
-  s.circuit.S1_m2 = S1_mm2 * 1e-6;
-  s.circuit.S2_m2 = S2_mm2 * 1e-6;
+  const bool out = kind == CircuitKind::kMeterOut;
+  s.circuit.S1_m2 = (out ? kOpenValve_mm2 : S_mm2) * 1e-6;
+  s.circuit.S2_m2 = (out ? S_mm2 : kOpenValve_mm2) * 1e-6;
   return s;
 }
 
-// Fig. 2 reduced to the claim's numbers: the settled part starts after 1 s of the 3 s records.
-CircuitContrast contrast(const std::vector<LabelledRecord>& in,
-                         const std::vector<LabelledRecord>& out) {
-  CircuitContrast c;
-  const auto add = [](const LabelledRecord& r, std::vector<double>& fl, std::vector<double>& mean) {
-    const auto& v = r.series.channel("v").values;
-    const auto from = static_cast<std::size_t>(r.series.rate_Hz());
-    fl.push_back(relative_fluctuation(v, from));
-    double sum = 0.0;
-    for (std::size_t k = from; k < v.size(); ++k) sum += v[k];
-    mean.push_back(from < v.size() ? sum / (v.size() - from) : 0.0);
-  };
-  for (const auto& r : in) add(r, c.meter_in_fluctuation, c.meter_in_mean);
-  for (const auto& r : out) add(r, c.meter_out_fluctuation, c.meter_out_mean);
-  return c;
+// Fig. 2's openings and record length.
+constexpr std::array<double, 3> kFig2Areas_mm2 = {0.2, 0.35, 0.6};
+constexpr double kFig2Record_s = 3.0;
+
+// Eq. (11)'s supply-pressure trend: the rig in a meter-in circuit (rod side at atmosphere)
+// at each Fig. 2 opening, Ps 0.25 -> 0.30 MPa.
+std::vector<DampingPair> meter_in_supply_trend(const Scenario& rig) {
+  std::vector<DampingPair> out;
+  for (double S : kFig2Areas_mm2) {
+    Scenario before = rig;
+    before.circuit.kind = CircuitKind::kMeterIn;
+    before.circuit.S1_m2 = S * 1e-6;
+    before.circuit.S2_m2 = kOpenValve_mm2 * 1e-6;
+    Scenario after = before;
+    apply_setting(after, "supply.pressure_MPa", 0.30, "reproduce");
+    const StabilityResult b = analyze_stability(Plant(before));
+    const StabilityResult a = analyze_stability(Plant(after));
+    if (!b.has_equilibrium() || !a.has_equilibrium()) continue;
+    out.push_back({b.paper.b1, a.paper.b1, b.max_real_part_per_s, a.max_real_part_per_s});
+  }
+  return out;
 }
 
-std::optional<DampingChange> damping_change(const Scenario& before, const Scenario& after) {
-  const StabilityResult b = analyze_stability(Plant(before));
-  const StabilityResult a = analyze_stability(Plant(after));
+// The paper's a1 and b1 at the example point, total moving mass 1.5 -> 3.0 kg.
+std::optional<LoadCoefficients> load_coefficients(const Scenario& base) {
+  Scenario heavy = base;
+  heavy.set_total_moving_mass(3.0);
+  const StabilityResult b = analyze_stability(Plant(base));
+  const StabilityResult a = analyze_stability(Plant(heavy));
   if (!b.has_equilibrium() || !a.has_equilibrium()) return std::nullopt;
-  return DampingChange{b.paper.a1, a.paper.a1, b.paper.b1, a.paper.b1, b.max_real_part_per_s,
-                       a.max_real_part_per_s};
+  return LoadCoefficients{b.paper.a1, a.paper.a1, b.paper.b1, a.paper.b1};
 }
 
 // The seal's steady friction-velocity curve from 0.5 mm/s to v_max, at the rig's pressure
@@ -96,21 +108,23 @@ std::vector<std::array<double, 2>> steady_curve(const Plant& plant, double v_max
 
 // The paper's sign verdict per point against the runs of the same point (same grid order).
 SignRuleCounts sign_rule_counts(const StabilityMap& map, const SweepSummary& sweep) {
-  SignRuleCounts c;
-  for (std::size_t i = 0; i < map.points.size() && i < sweep.per_point.size(); ++i) {
+  std::vector<std::optional<bool>> damped(map.points.size());
+  for (std::size_t i = 0; i < map.points.size(); ++i) {
     const StabilityResult& r = map.points[i].result;
-    if (!map.points[i].error.empty() || !r.has_equilibrium()) continue;
-    // regime_incidence[0] is "steady" (sweep_regime_names()).
-    const bool steady = sweep.per_point[i].regime_incidence.at(0) >= 0.5;
-    if (r.paper.verdict == StabilityVerdict::kDamped) {
-      ++c.damped;
-      c.damped_steady += steady ? 1 : 0;
-    } else {
-      ++c.excited;
-      c.excited_moving += steady ? 0 : 1;
-    }
+    if (map.points[i].error.empty() && r.has_equilibrium())
+      damped[i] = r.paper.verdict == StabilityVerdict::kDamped;
   }
-  return c;
+  return count_sign_rule(damped, sweep);
+}
+
+MapGrid map_grid(const SweepSpec& spec) { return {spec.axes[0].values, spec.axes[1].values}; }
+
+// The paper's conditions of Fig. 4 and Fig. 7: Ps 0.25 MPa and m = 1.5 kg, its total moving
+// mass (piston, rod and load: the paper's notation list).
+Scenario paper_conditions(Scenario s) {
+  apply_setting(s, "supply.pressure_MPa", 0.25, "reproduce");
+  s.set_total_moving_mass(1.5);
+  return s;
 }
 
 // The maps' grid and run-to-run variation (docs/virtual_rig.md).
@@ -137,15 +151,17 @@ void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vec
     // (docs/analysis.md "Divergence exponent's uncertainty").
     ci.example_uncertainty = a.divergence.slope_uncertainty_per_s;
   }
+  if (a.wolf_run) ci.example_wolf = a.wolf.lambda_per_s;
   ci.example_chaotic = a.verdict.chaotic;
+  ci.example_regime = regime_name(a.verdict.regime);
   ci.example_peak_share = a.spectrum.peak_share;
   ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
   // Low speed: up to a quarter of the example's largest speed.
   const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
   ci.friction_slope_vmax = 0.25 * vmax;
   const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(settle), F.end());
-  ci.friction_slope = low_speed_slope(v, F_settled, ci.friction_slope_vmax);
-  ci.friction_loop = measure_friction_loop(v, F_settled);
+  ci.friction_line = low_speed_line(v, F_settled, ci.friction_slope_vmax);
+  ci.friction_loop = measure_friction_loop(v, F_settled, a.rate_Hz);
   ci.fold_stretch = measure_fold_stretch(v, a.rate_Hz, a.dimension.dimension, a.delay.delay,
                                          a.theiler);
 }
@@ -165,37 +181,34 @@ std::vector<LoopLabel> loop_letters(const TimeSeries& run, const Scenario& s, do
   return out;
 }
 
-// The conclusion's Fig. 5 and Fig. 6 changes at the example point, by the linear analysis.
-void add_damping_inputs(ClaimInputs& ci, const Scenario& base) {
-  Scenario high_ps = base, heavy = base;
-  apply_setting(high_ps, "supply.pressure_MPa", 0.30, "reproduce");
-  apply_setting(heavy, "load.mass_kg", 3.0, "reproduce");
-  ci.higher_ps = damping_change(base, high_ps);
-  ci.heavier = damping_change(base, heavy);
-}
-
 // The report's figures and the inputs of its claims, gathered stage by stage.
 class ReportBuilder {
  public:
   explicit ReportBuilder(const ReproduceOptions& o)
       : o_(o),
         fig_dir_(o.out_dir + "/figures"),
-        base_(default_scenario()),
+        base_(paper_conditions(default_scenario())),
         spec_(map_spec(base_, o.quick)),
         stage_(o.progress, 9, 4 * spec_.runs()) {}
 
-  // Fig. 2: the paper's own model in both circuits, at three valve openings each.
+  // Fig. 2: the paper's own model in both circuits, at three valve openings each, under the
+  // assumptions of its Sections 3.2 and 3.3.
   void time_responses() {
     stage_.stage("Fig. 2: time responses of the paper's model");
     std::vector<LabelledRecord> in, out;
-    for (double S : {0.2, 0.35, 0.6}) {
-      in.push_back({fmt::format("S1 = {} mm^2", S),
-                    run(paper_model(CircuitKind::kMeterIn, S, 20.0), 3.0).series});
+    CircuitTransients t;
+    for (double S : kFig2Areas_mm2) {
       out.push_back({fmt::format("S2 = {} mm^2", S),
-                     run(paper_model(CircuitKind::kMeterOut, 2.7, S), 3.0).series});
+                     run(paper_model(CircuitKind::kMeterOut, S), kFig2Record_s).series});
+      in.push_back({fmt::format("S1 = {} mm^2", S),
+                    run(paper_model(CircuitKind::kMeterIn, S), kFig2Record_s).series});
+      t.areas_mm2.push_back(S);
+      const double rate = out.back().series.rate_Hz();
+      t.meter_out.push_back(settling(out.back().series.channel("v").values, rate));
+      t.meter_in.push_back(settling(in.back().series.channel("v").values, rate));
     }
-    add(time_responses_figure(in, out));
-    claims_.fig2 = contrast(in, out);
+    add(time_responses_figure(out, in));
+    claims_.fig2 = t;
   }
 
   // Fig. 7: the chaotic example, analysed on its settled record (the first kSettle_s, rest
@@ -232,7 +245,8 @@ class ReportBuilder {
     stick.circuit.S2_m2 = 0.05e-6;
     const TimeSeries stick_run = run(stick, 5.0).series;
     const double seconds = o_.quick ? 1.0 : 2.0;
-    add(friction_loops_figure({{"chaotic oscillation (S2 = 0.35 mm^2)", example_.series},
+    add(friction_loops_figure({{fmt::format("the Fig. 7 point (S2 = 0.35 mm^2, judged {})", claims_.example_regime),
+                                example_.series},
                                {"stick-slip (S2 = 0.05 mm^2)", stick_run}},
                               seconds, steady_curve(Plant(base_), 0.2),
                               {loop_letters(example_.series, base_, seconds),
@@ -245,22 +259,22 @@ class ReportBuilder {
     add(stability_map_figure(smap_));
   }
 
-  // Figs. 4-6 and the 4.5 kg condition: one resumable sweep each.
+  // Figs. 4-6 and the 4.5 kg condition: one resumable sweep each; m is the total moving mass.
   void maps() {
     struct Condition {
-      std::string name, title, key;
-      double value;
+      std::string name, title;
+      double Ps_MPa, m_kg;
     };
     const std::vector<Condition> conditions = {
-        {"fig4_map_ps025_m15", "Fig. 4: Ps 0.25 MPa, m 1.5 kg", "", 0.0},
-        {"fig5_map_ps030_m15", "Fig. 5: Ps 0.30 MPa, m 1.5 kg", "supply.pressure_MPa", 0.30},
-        {"fig6_map_ps025_m30", "Fig. 6: Ps 0.25 MPa, m 3.0 kg", "load.mass_kg", 3.0},
-        {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", "load.mass_kg",
-         4.5}};
+        {"fig4_map_ps025_m15", "Fig. 4: Ps 0.25 MPa, m 1.5 kg", 0.25, 1.5},
+        {"fig5_map_ps030_m15", "Fig. 5: Ps 0.30 MPa, m 1.5 kg", 0.30, 1.5},
+        {"fig6_map_ps025_m30", "Fig. 6: Ps 0.25 MPa, m 3.0 kg", 0.25, 3.0},
+        {"fig6b_map_ps025_m45", "Ps 0.25 MPa, m 4.5 kg (the paper: no chaos)", 0.25, 4.5}};
     for (const Condition& c : conditions) {
       stage_.stage("sweep: " + c.title);
       SweepSpec s = spec_;
-      if (!c.key.empty()) apply_setting(s.base, c.key, c.value, "reproduce");
+      apply_setting(s.base, "supply.pressure_MPa", c.Ps_MPa, "reproduce");
+      s.base.set_total_moving_mass(c.m_kg);
       SweepOptions so;
       so.out_dir = o_.out_dir + "/sweeps/" + c.name.substr(c.name.find("map_") + 4);
       so.threads = o_.threads;
@@ -274,33 +288,49 @@ class ReportBuilder {
     }
   }
 
-  // The claims table and the page.
+  // The claims table, claims.json and the page.
   ReproduceResult finish() {
     stage_.stage("claims and report");
-    claims_.spec = spec_;
+    claims_.grid = map_grid(spec_);
     claims_.base = maps_[0];
     claims_.high_ps = maps_[1];
     claims_.double_m = maps_[2];
     claims_.triple_m = maps_[3];
-    add_damping_inputs(claims_, base_);
+    claims_.meter_in_ps = meter_in_supply_trend(base_);
+    claims_.heavier = load_coefficients(base_);
     claims_.sign_rule = sign_rule_counts(smap_, maps_[0]);
     result_.claims = evaluate_claims(claims_);
-    const std::string settings = fmt::format(
-        "{} grid ({} x {} points), {} runs per point, {} s records{}, 3 % friction variation "
-        "and a 2 % bore texture per run; chaotic example: {}.",
-        o_.quick ? "quick" : "the paper's", spec_.axes[0].values.size(),
-        spec_.axes[1].values.size(), spec_.repeats, spec_.base.run.duration_s,
-        base_.cylinder.volumes_frozen() ? "" : " or up to the stroke end", example_length());
+    write_file(o_.out_dir + "/claims.json", claims_json(result_.claims));
     result_.index_html = o_.out_dir + "/index.html";
-    AtomicFile html(result_.index_html);
-    html.stream() << report_html(result_.figures, result_.claims, scenario_to_toml(base_),
-                                 settings);
-    html.commit();
+    write_file(result_.index_html, report_html(result_.figures, result_.claims,
+                                               scenario_to_toml(spec_.base), settings()));
     return result_;
   }
 
  private:
   void add(const FigureSpec& spec) { result_.figures.push_back(render_figure(spec, fig_dir_)); }
+  static void write_file(const std::string& path, const std::string& text) {
+    AtomicFile f(path);
+    f.stream() << text;
+    f.commit();
+  }
+  // What the maps and the example ran with, as the page states it.
+  [[nodiscard]] std::string settings() const {
+    const VariationParams& v = spec_.base.variation;
+    return fmt::format(
+        "Maps: {} grid ({} x {} points), {} runs per point, {} s records{}, {:g} % seal "
+        "friction scatter and a {:g} % bore texture per run; m is the total moving mass{}. "
+        "Chaotic example (Figs. 3 and 7): Ps 0.25 MPa, m {:g} kg, no scatter or texture, {}.",
+        o_.quick ? "quick" : "the paper's", spec_.axes[0].values.size(),
+        spec_.axes[1].values.size(), spec_.repeats, spec_.base.run.duration_s,
+        base_.cylinder.volumes_frozen() ? "" : " or up to the stroke end",
+        100 * v.friction_rel_sd, 100 * v.texture_rel,
+        base_.load.coupling == LoadCoupling::kSpring
+            ? fmt::format(" (piston and rod {:g} kg, the rest the load on its mount)",
+                          base_.load.piston_mass_kg)
+            : std::string(" (one rigid body)"),
+        base_.total_moving_mass_kg(), example_length());
+  }
   [[nodiscard]] double record_s() const { return o_.quick ? 10.0 : 30.0; }
   // The example's record as it ran: a stroke end shortens it, and the page says so.
   [[nodiscard]] std::string example_length() const {

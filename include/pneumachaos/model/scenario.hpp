@@ -101,6 +101,13 @@ struct Scenario {
 
   /// Cross-key checks (rod < bore, Fs >= Fc, ...); throws Error naming the key(s).
   void validate() const;
+
+  /// The paper's m, its notation list's "total mass": piston, rod and load together (rigid:
+  /// load.mass_kg; spring: load.piston_mass_kg + load.mass_kg).
+  [[nodiscard]] double total_moving_mass_kg() const;
+  /// Sets the total moving mass; a spring-coupled rig keeps its piston + rod and changes the
+  /// load. Throws Error (naming load.mass_kg) when kg is not above the piston + rod.
+  void set_total_moving_mass(double kg);
 };
 
 /// The built-in default scenario: the virtual rig that shows the paper's regimes (a load on

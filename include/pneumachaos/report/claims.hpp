@@ -1,9 +1,11 @@
 #pragma once
-// The paper's claims against our numbers, each judged "agrees", "disagrees" or "not
-// reproduced" by a stated rule from the sweep results and the chaotic example.
+// The paper's claims against our numbers. Each row quotes the paper's sentence, says how we
+// read it, states the rule, gives our numbers, a signed margin and the verdict, and for a row
+// that does not agree one sentence saying why (docs/report.md lists every rule).
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pneumachaos/report/claim_rules.hpp"
@@ -11,60 +13,96 @@
 
 namespace pneumachaos {
 
+/// The verdicts a row can carry. Only the first three are scored: an identity is a rule no
+/// plausible model can fail, and a contradictory row is one where the paper's own sentences
+/// disagree, so there is nothing to score.
+inline constexpr const char* kAgrees = "agrees";
+inline constexpr const char* kDisagrees = "disagrees";
+inline constexpr const char* kNotReproduced = "not reproduced";
+inline constexpr const char* kIdentity = "identity";
+inline constexpr const char* kContradictory = "contradictory";
+
 struct Claim {
-  std::string claim;    ///< the paper's statement
-  std::string paper;    ///< its figure, as the paper gives it
-  std::string ours;     ///< our measured figure
-  std::string verdict;  ///< agrees / disagrees / not reproduced
-  std::string rule;     ///< how the verdict was decided
+  Claim() = default;
+  /// The row's text; its numbers and verdict are filled in when it is judged.
+  Claim(std::string id_, std::string quote_, std::string where_, std::string reading_,
+        std::string rule_, std::string figure_)
+      : id(std::move(id_)),
+        quote(std::move(quote_)),
+        where(std::move(where_)),
+        reading(std::move(reading_)),
+        rule(std::move(rule_)),
+        figure(std::move(figure_)) {}
+  std::string id;       ///< stable key (claims.json), e.g. "fig7_spectrum"
+  std::string quote;    ///< the paper's sentence(s), verbatim
+  std::string where;    ///< its section or figure
+  std::string reading;  ///< what we take it to say, in one line
+  std::string rule;     ///< how the verdict is decided
   std::string figure;   ///< the report figure that shows it (FigureSpec name), or empty
+  std::string ours;     ///< our numbers
+  std::string verdict;  ///< one of the names above
+  double margin = kNaN;  ///< signed, dimensionless; >= 0 passes; NaN: not evaluated
+  std::string why;       ///< for a row that does not agree: one sentence
+  [[nodiscard]] bool scored() const { return verdict != kIdentity && verdict != kContradictory; }
 };
 
-/// Fig. 2's records, reduced: fluctuation (std/|mean| of the settled part) and mean speed,
-/// one value per restrictor area, in order of increasing S.
-struct CircuitContrast {
-  std::vector<double> meter_in_fluctuation, meter_out_fluctuation;
-  std::vector<double> meter_in_mean, meter_out_mean;
+/// How many rows carry each verdict.
+struct ClaimCount {
+  std::size_t agrees = 0, disagrees = 0, not_reproduced = 0, identity = 0, contradictory = 0;
+  [[nodiscard]] std::size_t scored() const { return agrees + disagrees + not_reproduced; }
+};
+ClaimCount count_claims(const std::vector<Claim>& claims);
+/// "N of M claims agree (...)": the report's headline.
+std::string claims_headline(const ClaimCount& c);
+/// The table as JSON (claims.json): the count and every row with its fields.
+std::string claims_json(const std::vector<Claim>& claims);
+
+/// Fig. 2 reduced: each circuit's step responses at the same openings, under the paper's own
+/// assumptions (meter-out with P1 = Ps, meter-in with the rod side at atmosphere).
+struct CircuitTransients {
+  std::vector<double> areas_mm2;
+  std::vector<Settling> meter_out, meter_in;
 };
 
-/// A coefficient of the paper's linear analysis before and after a change (Ps or load).
-struct DampingChange {
-  double a1_before = 0.0, a1_after = 0.0;        ///< eq. (9), meter-out
-  double b1_before = 0.0, b1_after = 0.0;        ///< eq. (11), meter-in
-  double max_re_before = 0.0, max_re_after = 0.0;  ///< full model's largest real part [1/s]
-};
-
-/// The paper's sign rule (a1 / b1 < 0: self-excited) against the simulated runs per point.
-struct SignRuleCounts {
-  std::size_t damped = 0, damped_steady = 0;  ///< steady in at least half of the runs
-  std::size_t excited = 0, excited_moving = 0;  ///< not steady in at least half of the runs
+/// The paper's a1 (eq. 9) and b1 (eq. 11) at the example point before and after a load change.
+struct LoadCoefficients {
+  double a1_before = 0.0, a1_after = 0.0, b1_before = 0.0, b1_after = 0.0;  ///< [N s/m]
 };
 
 struct ClaimInputs {
-  SweepSpec spec;                        ///< the grid of the maps (S1, S2 axes first and second)
-  std::optional<SweepSummary> base;      ///< Ps 0.25 MPa, m 1.5 kg
+  MapGrid grid;                          ///< the maps' S1 x S2 axes
+  std::optional<SweepSummary> base;      ///< Ps 0.25 MPa, m 1.5 kg (total moving mass)
   std::optional<SweepSummary> high_ps;   ///< Ps 0.30 MPa
   std::optional<SweepSummary> double_m;  ///< m 3.0 kg
   std::optional<SweepSummary> triple_m;  ///< m 4.5 kg
-  std::optional<double> example_lambda;  ///< divergence exponent of the Fig. 7 record [1/s]
-  std::optional<double> example_uncertainty;
-  std::optional<double> example_model_lambda;  ///< the model's own exponent there [1/s]
+  // The chaotic example (Fig. 7), its settled record.
+  std::optional<double> example_lambda;       ///< divergence exponent [1/s]
+  std::optional<double> example_uncertainty;  ///< its slope's uncertainty [1/s]
+  std::optional<double> example_wolf;         ///< Wolf's estimate [1/s]
+  std::optional<double> example_model_lambda;       ///< the model's own exponent [1/s]
   std::optional<double> example_model_uncertainty;  ///< its standard error [1/s]
-  std::optional<bool> example_chaotic;         ///< the regime verdict of the settled record
-  std::optional<double> example_peak_share;    ///< spectral peak (+-1 bin) / total power
+  std::optional<bool> example_chaotic;        ///< the regime verdict says chaotic
+  std::string example_regime;                 ///< the verdict's regime name
+  std::optional<double> example_peak_share;   ///< spectral peak (+-1 bin) / total power
   std::optional<double> example_acf_after_1s;  ///< largest |ACF| at lags >= 1 s
-  std::optional<CircuitContrast> fig2;
-  std::optional<double> friction_slope;        ///< dF/dv at low speed, chaotic record [N*s/m]
-  double friction_slope_vmax = 0.0;            ///< its upper speed [m/s]
-  std::optional<FoldStretch> fold_stretch;    ///< Fig. 7c, settled example record
-  std::optional<FrictionLoop> friction_loop;  ///< Fig. 3, settled example record
-  std::optional<DampingChange> higher_ps, heavier;
+  std::optional<FoldStretch> fold_stretch;
+  std::optional<FrictionLoop> friction_loop;
+  std::optional<LineFit> friction_line;  ///< friction against low speed, example record
+  double friction_slope_vmax = 0.0;      ///< its upper speed [m/s]
+  std::optional<CircuitTransients> fig2;
+  std::vector<DampingPair> meter_in_ps;  ///< eq. (11): Ps 0.25 -> 0.30 at each meter-in opening
+  std::optional<LoadCoefficients> heavier;  ///< 1.5 -> 3.0 kg at the example point
   std::optional<SignRuleCounts> sign_rule;
 };
 
+/// The claims about the maps (Figs. 4-6; claims.cpp).
+std::vector<Claim> map_claims(const ClaimInputs& in);
 /// The claims of the chaotic example, Figs. 2 and 3 and the linear analysis (claims_example.cpp).
 std::vector<Claim> example_claims(const ClaimInputs& in);
-
+/// Every row, maps first.
 std::vector<Claim> evaluate_claims(const ClaimInputs& in);
+
+/// Fills a row's verdict, margin and why from its rule's result.
+void judge(Claim& c, const RuleResult& r);
 
 }  // namespace pneumachaos

@@ -28,8 +28,9 @@ struct LoopLabel {
   double F_N = 0.0;
 };
 
-FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_in,
-                                 const std::vector<LabelledRecord>& meter_out);
+/// Fig. 2 as the paper labels it: (a) meter-out, (b) meter-in.
+FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
+                                 const std::vector<LabelledRecord>& meter_in);
 /// Seal friction against piston velocity over `seconds` of each record (Fig. 3's loops),
 /// with the seal's steady curve as (v [m/s], F [N]) pairs and, per record, the letters of one
 /// loop (empty: none found).
