@@ -138,20 +138,19 @@ RuleResult a_few_points(std::size_t n, std::size_t points) {
                                       n, most));
 }
 
-std::size_t false_positive_allowance(std::size_t runs, double rate) {
-  if (runs == 0) return 0;
-  const boost::math::binomial_distribution<double> d(static_cast<double>(runs), rate);
+std::size_t false_positive_allowance(std::size_t judged, double rate) {
+  if (judged == 0) return 0;
+  const boost::math::binomial_distribution<double> d(static_cast<double>(judged), rate);
   return static_cast<std::size_t>(boost::math::quantile(d, 0.95));
 }
 
-RuleResult no_chaos_beyond_false_positives(std::size_t chaotic, std::size_t runs) {
-  if (runs == 0) return {kNaN, "no runs"};
-  const double allow = static_cast<double>(false_positive_allowance(runs));
+RuleResult no_chaos_beyond_false_positives(std::size_t chaotic, std::size_t judged) {
+  const double allow = static_cast<double>(false_positive_allowance(judged));
   const double c = static_cast<double>(chaotic);
   return rule_result((allow - c) / std::max(allow, 1.0),
-                 fmt::format("{} of {} runs are chaotic, more than the verdict's false-positive "
-                             "rate ({:.1f} %) gives (at most {:.0f})",
-                             chaotic, runs, 100 * kVerdictFalsePositiveRate, allow));
+                     fmt::format("{} runs are chaotic, more than the verdict's false-positive "
+                                 "rate ({:.1f} % of {} judged runs) gives (at most {:.0f})",
+                                 chaotic, 100 * kVerdictFalsePositiveRate, judged, allow));
 }
 
 std::size_t chaotic_runs(const SweepSummary& s) {
@@ -159,6 +158,20 @@ std::size_t chaotic_runs(const SweepSummary& s) {
   for (const PointSummary& p : s.per_point)
     n += p.chaos_incidence * static_cast<double>(p.runs - p.failed);
   return static_cast<std::size_t>(std::lround(n));
+}
+
+std::size_t judged_runs(const SweepSummary& s) {
+  double n = 0.0;
+  for (const PointSummary& p : s.per_point) {
+    if (p.regime_incidence.empty()) continue;
+    const double judged = 1.0 - p.regime_incidence.front() - p.regime_incidence.back();
+    n += judged * static_cast<double>(p.runs - p.failed);
+  }
+  return static_cast<std::size_t>(std::lround(n));
+}
+
+bool chaos_beyond_false_positives(const SweepSummary& s) {
+  return chaotic_runs(s) > false_positive_allowance(judged_runs(s));
 }
 
 namespace {
