@@ -66,24 +66,28 @@ TEST(VirtualRig, DefaultRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel)
   EXPECT_LT(*std::max_element(settled, vl.end()), 0.200);
 }
 
-TEST(VirtualRig, DefaultModelExponentWithSealScatterIsBeyondThreeSigma) {
-  // Five runs of the Fig. 7 point with the maps' variation (3 % seal scatter, 2 % bore
-  // texture), each measured after 1 s up to its stroke end: the point mean is beyond 3 sigma
-  // (single runs over the ~6.5 s the stroke leaves are not: docs/virtual_rig.md).
-  SweepSpec spec;
-  spec.base = default_scenario();
-  spec.base.variation.friction_rel_sd = 0.03;
-  spec.base.variation.texture_rel = 0.02;
-  spec.axes = {parse_grid_axis("circuit.S2_mm2=0.35:0.35:0.1")};
-  spec.repeats = 5;
-  spec.model_exponent.enabled = true;
-  spec.validate();
-  std::vector<RunRecord> runs;
-  for (std::size_t k = 0; k < spec.repeats; ++k) runs.push_back(run_one(spec, 0, k));
-  const PointSummary p = summarize(spec, runs).per_point.at(0);
-  EXPECT_EQ(p.failed, 0u);
-  EXPECT_GT(p.mean_lambda_model, 3.0 * p.lambda_model_uncertainty)
-      << p.mean_lambda_model << " +- " << p.lambda_model_uncertainty;
+// The valve law's laminar patch near r = 1 is a numerical device and must not decide the
+// chaos (docs/model.md, "Valves"): at a stationary chaotic point of the default rig (volumes
+// frozen at 420 mm, S2 0.50 mm^2, where the supply valve runs at r ~ 0.994 and the exponent is
+// resolvable) moving the junction from 0.995 to 0.9995 leaves the model's exponent within its
+// uncertainty. With the earlier branch, matched in value only, the junction was a kink.
+TEST(VirtualRig, LaminarPatchWidthDoesNotDecideTheExponent) {
+  Scenario s = default_scenario();
+  s.cylinder.frozen_position_m = 0.420;
+  s.circuit.S2_m2 = 0.50e-6;
+  ModelLyapunovOptions m;
+  m.transient_s = 2.0;
+  m.measure_s = 40.0;
+  std::vector<ModelLyapunovResult> r;
+  for (double junction : {0.995, 0.9995}) {
+    s.valve.laminar_ratio = junction;
+    r.push_back(plant_lyapunov(Plant(s), s.run, m));
+    ASSERT_TRUE(r.back().ok) << r.back().message;
+    EXPECT_GT(r.back().lambda_per_s, 3.0 * r.back().uncertainty_per_s) << junction;
+  }
+  const double sigma = std::hypot(r[0].uncertainty_per_s, r[1].uncertainty_per_s);
+  EXPECT_LT(std::abs(r[0].lambda_per_s - r[1].lambda_per_s), 2.0 * sigma)
+      << r[0].lambda_per_s << " against " << r[1].lambda_per_s << " +- " << sigma;
 }
 
 TEST(FrozenLightPiston, ModelExponentIsPositiveAndConfirmed) {

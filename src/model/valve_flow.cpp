@@ -25,7 +25,16 @@ Orifice::Orifice(const ValveLaw& valve, const GasConstants& gas, double S_m2, do
     inv_flux_crit_ =
         1.0 / std::sqrt(std::pow(r_crit_, 2.0 / k_) - std::pow(r_crit_, (k_ + 1.0) / k_));
   }
-  psi_lam_ = raw_psi(valve_.laminar_ratio);
+  // Near r = 1 the law's flow goes as sqrt(1 - r) (a turbulent orifice), with an infinite
+  // slope at r = 1. Above r_lam it is replaced by a x + c x^2 in x = 1 - r: linear at small
+  // pressure differences (laminar), and matched to the law in value AND slope at r_lam, so the
+  // flow's derivative is continuous there and the junction's place does not act as a kink
+  // (docs/model.md, "Valves").
+  const double r_lam = valve_.laminar_ratio, x_lam = 1.0 - r_lam, h = 1e-4 * x_lam;
+  const double psi_lam = raw_psi(r_lam);
+  const double slope = (raw_psi(r_lam - h) - raw_psi(r_lam + h)) / (2.0 * h);  // d psi / dx
+  lam_c_ = (slope * x_lam - psi_lam) / (x_lam * x_lam);
+  lam_a_ = slope - 2.0 * lam_c_ * x_lam;
 }
 
 double flow_function(const ValveLaw& valve, const GasConstants& gas, double r) {

@@ -20,8 +20,9 @@ struct GasConstants {
 struct ValveLaw {
   FlowLaw law = FlowLaw::kIso6358;
   double critical_ratio = 0.528;  ///< b of ISO 6358; ignored by the isentropic law
-  /// Above this pressure ratio the flow is made linear in the pressure difference (matched in
-  /// value at the junction), so the integrator never meets the infinite slope at r = 1.
+  /// Above this pressure ratio the flow becomes linear in the pressure difference as r -> 1
+  /// (laminar), joined to the law in value and slope (a quadratic in 1 - r), so the
+  /// integrator never meets the infinite slope at r = 1.
   double laminar_ratio = 0.995;
 };
 
@@ -62,7 +63,7 @@ class Orifice {
   double coefficient_;  // S * choked_flux_factor
   double r_crit_;       // b (ISO 6358) or the isentropic critical ratio
   double inv_flux_crit_ = 1.0;
-  double psi_lam_ = 0.0;
+  double lam_a_ = 0.0, lam_c_ = 0.0;  // psi = a x + c x^2, x = 1 - r, above r_lam
 };
 
 template <typename T>
@@ -91,9 +92,10 @@ T Orifice::psi(T r) const {
   }
   const double r_lam = valve_.laminar_ratio;
   if (r <= r_lam) return raw_psi(r);
-  // Linear in (1 - r) = (P_up - P_down)/P_up, equal to the law at r_lam: the ellipse's
-  // infinite slope at r = 1 would otherwise stall the integrator.
-  return psi_lam_ * (1.0 - r) / (1.0 - r_lam);
+  // Laminar as r -> 1, joined to the law in value and slope at r_lam: the ellipse's infinite
+  // slope at r = 1 would otherwise stall the integrator.
+  const T x = 1.0 - r;
+  return x * (lam_a_ + lam_c_ * x);
 }
 
 template <typename T>
