@@ -278,6 +278,40 @@ TEST(Sweep, ARecordWithTheModelExponentRoundTrips) {
   EXPECT_TRUE(std::isnan(RunRecord::decode(RunRecord{}.encode()).lambda_model));
 }
 
+// The record's columns come from one table (run_record.cpp); the header and a full record are
+// pinned to the text runs.csv and journals have always had, so files written before read back.
+TEST(Sweep, TheRecordsCsvFormIsUnchanged) {
+  EXPECT_EQ(RunRecord::csv_header(),
+            "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
+            "lambda_per_s,lambda_uncertainty_per_s,wolf_per_s,broadband_share,late_acf,regime,"
+            "chaotic,stick_slip,zero_one_K,prediction_ratio,repeat_share,lambda_model_per_s,"
+            "lambda_model_uncertainty_per_s,lambda_model_span_s,reason");
+  EXPECT_EQ(RunRecord::kFields, 25u);
+  RunRecord r;
+  r.point = 7;
+  r.repeat = 2;
+  r.seed = 18446744073709551615ull;
+  r.ok = false;
+  r.termination = "stop, \"hit\"";
+  r.t_final_s = 7.5;
+  r.steps = 1234;
+  r.sticks = 5;
+  r.mean_v = 0.1;
+  r.lambda = -0.0;
+  r.regime = "stick-slip";
+  r.chaotic = true;
+  r.stick_slip = true;
+  r.zero_one_K = 1e-300;
+  r.reason = "a,b\nc";
+  const std::string line = r.encode();
+  EXPECT_EQ(line,
+            "7,2,18446744073709551615,0,stop; ;hit;,7.5,1234,5,0.1,nan,-0,nan,nan,nan,nan,"
+            "stick-slip,1,1,1e-300,nan,nan,nan,nan,nan,a;b;c");
+  EXPECT_EQ(RunRecord::decode(line).encode(), line);
+  EXPECT_THROW(RunRecord::decode("1,2,3"), Error);
+  EXPECT_THROW(RunRecord::decode(std::string(line).replace(0, 1, "x")), Error);
+}
+
 // The sweep's model exponent of a run is `lyapunov`'s on the same settings, bit for bit: at
 // the frozen chaotic point (docs/virtual_rig.md: 4.07 +- 0.36 1/s over 60 s) beyond 3 sigma,
 // at the stick-slip point S2 = 0.05 mm^2 not.

@@ -1,6 +1,10 @@
+// The run record's CSV form (runs.csv and the journal), declared once: one table of fields
+// from which the header, the writer and the reader all follow, so a new field is one line.
 #include <fmt/format.h>
 
+#include <array>
 #include <charconv>
+#include <type_traits>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_fields.hpp"
@@ -14,38 +18,98 @@ std::string clean(std::string s) {
   return s;
 }
 
-double to_double(const std::string& f) {
-  if (f == "nan") return kNaN;
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-  if (ec != std::errc() || p != f.data() + f.size())
-    throw Error("journal", "bad number \"" + f + "\"");
-  return v;
+// Doubles print as their shortest round-trip form ("nan" for NaN), flags as 1 / 0, text
+// with the CSV's separators replaced.
+template <typename T>
+std::string put(const T& v) {
+  if constexpr (std::is_same_v<T, bool>) {
+    return v ? "1" : "0";
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    return clean(v);
+  } else {
+    return fmt::format("{}", v);
+  }
 }
 
-std::uint64_t to_u64(const std::string& f) {
-  std::uint64_t v = 0;
-  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-  if (ec != std::errc() || p != f.data() + f.size())
-    throw Error("journal", "bad integer \"" + f + "\"");
-  return v;
+template <typename T>
+void get(const std::string& f, T& out) {
+  if constexpr (std::is_same_v<T, bool>) {
+    out = f == "1";
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    out = f;
+  } else {
+    if (std::is_floating_point_v<T> && f == "nan") {
+      out = kNaN;
+      return;
+    }
+    const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), out);
+    if (ec != std::errc() || p != f.data() + f.size())
+      throw Error("journal", fmt::format("bad {} \"{}\"",
+                                         std::is_floating_point_v<T> ? "number" : "integer", f));
+  }
 }
+
+struct Field {
+  const char* name;
+  std::string (*write)(const RunRecord&);
+  void (*read)(RunRecord&, const std::string&);
+};
+
+template <auto Member>
+constexpr Field field(const char* name) {
+  return {name, [](const RunRecord& r) { return put(r.*Member); },
+          [](RunRecord& r, const std::string& f) { get(f, r.*Member); }};
+}
+
+// The columns of runs.csv, in order.
+constexpr std::array kTable = {
+    field<&RunRecord::point>("point"),
+    field<&RunRecord::repeat>("repeat"),
+    field<&RunRecord::seed>("seed"),
+    field<&RunRecord::ok>("ok"),
+    field<&RunRecord::termination>("termination"),
+    field<&RunRecord::t_final_s>("t_final_s"),
+    field<&RunRecord::steps>("steps"),
+    field<&RunRecord::sticks>("sticks"),
+    field<&RunRecord::mean_v>("mean_v_m_per_s"),
+    field<&RunRecord::std_v>("std_v_m_per_s"),
+    field<&RunRecord::lambda>("lambda_per_s"),
+    field<&RunRecord::lambda_uncertainty>("lambda_uncertainty_per_s"),
+    field<&RunRecord::wolf>("wolf_per_s"),
+    field<&RunRecord::broadband>("broadband_share"),
+    field<&RunRecord::late_acf>("late_acf"),
+    field<&RunRecord::regime>("regime"),
+    field<&RunRecord::chaotic>("chaotic"),
+    field<&RunRecord::stick_slip>("stick_slip"),
+    field<&RunRecord::zero_one_K>("zero_one_K"),
+    field<&RunRecord::prediction_ratio>("prediction_ratio"),
+    field<&RunRecord::repeat_share>("repeat_share"),
+    field<&RunRecord::lambda_model>("lambda_model_per_s"),
+    field<&RunRecord::lambda_model_uncertainty>("lambda_model_uncertainty_per_s"),
+    field<&RunRecord::lambda_model_span_s>("lambda_model_span_s"),
+    field<&RunRecord::reason>("reason"),
+};
 
 }  // namespace
 
+const std::size_t RunRecord::kFields = kTable.size();
+
 std::string RunRecord::csv_header() {
-  return "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
-         "lambda_per_s,lambda_uncertainty_per_s,wolf_per_s,broadband_share,late_acf,regime,"
-         "chaotic,stick_slip,zero_one_K,prediction_ratio,repeat_share,lambda_model_per_s,"
-         "lambda_model_uncertainty_per_s,lambda_model_span_s,reason";
+  std::string h;
+  for (const Field& f : kTable) {
+    if (!h.empty()) h += ',';
+    h += f.name;
+  }
+  return h;
 }
 
 std::string RunRecord::encode() const {
-  return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-                     point, repeat, seed, ok ? 1 : 0, clean(termination), t_final_s, steps, sticks,
-                     mean_v, std_v, lambda, lambda_uncertainty, wolf, broadband, late_acf, regime,
-                     chaotic ? 1 : 0, stick_slip ? 1 : 0, zero_one_K, prediction_ratio,
-                     repeat_share, lambda_model, lambda_model_uncertainty, lambda_model_span_s, clean(reason));
+  std::string line;
+  for (const Field& f : kTable) {
+    if (!line.empty()) line += ',';
+    line += f.write(*this);
+  }
+  return line;
 }
 
 RunRecord RunRecord::decode(const std::string& line) {
@@ -53,31 +117,7 @@ RunRecord RunRecord::decode(const std::string& line) {
   if (f.size() != kFields)
     throw Error("journal", fmt::format("a record has {} fields, expected {}", f.size(), kFields));
   RunRecord r;
-  r.point = to_u64(f[0]);
-  r.repeat = to_u64(f[1]);
-  r.seed = to_u64(f[2]);
-  r.ok = f[3] == "1";
-  r.termination = f[4];
-  r.t_final_s = to_double(f[5]);
-  r.steps = to_u64(f[6]);
-  r.sticks = to_u64(f[7]);
-  r.mean_v = to_double(f[8]);
-  r.std_v = to_double(f[9]);
-  r.lambda = to_double(f[10]);
-  r.lambda_uncertainty = to_double(f[11]);
-  r.wolf = to_double(f[12]);
-  r.broadband = to_double(f[13]);
-  r.late_acf = to_double(f[14]);
-  r.regime = f[15];
-  r.chaotic = f[16] == "1";
-  r.stick_slip = f[17] == "1";
-  r.zero_one_K = to_double(f[18]);
-  r.prediction_ratio = to_double(f[19]);
-  r.repeat_share = to_double(f[20]);
-  r.lambda_model = to_double(f[21]);
-  r.lambda_model_uncertainty = to_double(f[22]);
-  r.lambda_model_span_s = to_double(f[23]);
-  r.reason = f[24];
+  for (std::size_t i = 0; i < kFields; ++i) kTable[i].read(r, f[i]);
   return r;
 }
 

@@ -70,9 +70,10 @@ struct RunRecord {
   double lambda_model = kNaN, lambda_model_uncertainty = kNaN, lambda_model_span_s = kNaN;
 
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
-  /// Fields of an encoded record; part of the journal's header, so a journal written in
-  /// another record format is refused as such.
-  static constexpr std::size_t kFields = 25;
+  /// Fields of an encoded record (one table in run_record.cpp gives the header, the writer and
+  /// the reader); part of the journal's header, so a journal written in another record format
+  /// is refused as such.
+  static const std::size_t kFields;
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
   static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
   static std::string csv_header();
