@@ -65,6 +65,17 @@ TEST(ClaimRules, Fig2ComparesTheTransientsNotTheSettledState) {
   EXPECT_NE(close.why.find("1.37"), std::string::npos);
 }
 
+// A stick-slip response (0.056 s slips at 0.3 m/s every 0.14 s, mean 0.12 m/s): its final
+// speed is its mean over the ten cycles of the record's second half, to within the part of a
+// cycle the window cuts (5 %); the last 0.2 s alone can read anything from 0.08 to 0.17.
+TEST(ClaimRules, FinalSpeedOfAStickSlipResponseIsItsMean) {
+  std::vector<double> v(3000);
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = (k % 140) < 56 ? 0.3 : 0.0;
+  const Settling s = settling(v, kRate);
+  EXPECT_NEAR(s.final_value, 0.12, 0.12 * 0.05);
+  EXPECT_FALSE(s.settled);
+}
+
 TEST(ClaimRules, SpeedRisesWithArea) {
   EXPECT_TRUE(rises_with_area({38, 66, 110}).passes());
   EXPECT_FALSE(rises_with_area({38, 66, 60}).passes());

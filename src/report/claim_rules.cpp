@@ -53,11 +53,11 @@ RuleResult judged_chaotic(bool chaotic, const std::string& regime) {
                  "the record's verdict is " + regime + ", not chaotic");
 }
 
-Settling settling(const std::vector<double>& v, double rate_Hz, double final_s) {
+Settling settling(const std::vector<double>& v, double rate_Hz) {
   Settling s;
   if (v.empty() || !(rate_Hz > 0.0)) return s;
   const auto n = v.size();
-  const auto tail = std::clamp<std::size_t>(static_cast<std::size_t>(final_s * rate_Hz), 1, n);
+  const std::size_t tail = std::max<std::size_t>(n / 2, 1);
   double sum = 0.0;
   for (std::size_t k = n - tail; k < n; ++k) sum += v[k];
   s.final_value = sum / static_cast<double>(tail);
@@ -67,7 +67,7 @@ Settling settling(const std::vector<double>& v, double rate_Hz, double final_s) 
   for (std::size_t k = start; k < n; ++k)
     if (std::abs(v[k] - s.final_value) > 0.05 * std::abs(s.final_value)) last_out = k;
   s.start_s = static_cast<double>(start) / rate_Hz;
-  // Out of the band within the averaging window: it has not settled in this record.
+  // Out of the band within the second half: it has not settled in this record.
   s.settled = last_out + tail < n;
   s.settle_s = static_cast<double>(s.settled ? last_out : n) / rate_Hz;
   s.decay_rate_per_s = std::log(20.0) / std::max(s.settle_s - s.start_s, 1.0 / rate_Hz);

@@ -43,15 +43,17 @@ RuleResult judged_chaotic(bool chaotic, const std::string& regime);
 
 /// How fast a step response settles: ln(20) / (time from the start of motion until the
 /// velocity stays within 5 % of its final value), the decay rate of an exponential envelope
-/// [1/s]. The final value is the mean of the last `final_s`; a record that never settles
-/// gives ln(20) / (its length after the start): a bound from above, `settled` false.
+/// [1/s]. The final value is the mean of the record's second half (a stick-slip response
+/// averages over several of its cycles there); a response still outside the band in that half
+/// has not settled: its rate is ln(20) / (the record's length after the start), a bound from
+/// above, and `settled` is false.
 struct Settling {
   double final_value = 0.0;
   double start_s = 0.0, settle_s = 0.0;
   double decay_rate_per_s = 0.0;
   bool settled = false;
 };
-Settling settling(const std::vector<double>& v, double rate_Hz, double final_s = 0.5);
+Settling settling(const std::vector<double>& v, double rate_Hz);
 /// "(a) fluctuates considerably ... (b) slight oscillation and high attenuation": every
 /// response of (b) decays at least twice as fast as every response of (a).
 RuleResult attenuates_faster(const std::vector<double>& fast_decay,
