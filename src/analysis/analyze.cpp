@@ -122,7 +122,7 @@ void note_lines(AnalysisResult& r) {
 void AnalysisOptions::validate() const {
   zero_one.validate();
   surrogates.validate();
-  verdict.repetition.validate();
+  verdict.validate();
 }
 
 namespace {

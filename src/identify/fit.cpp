@@ -21,6 +21,7 @@
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/simulate/event_integrator.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos::identify {
 namespace {
@@ -74,9 +75,7 @@ struct Prepared {
 
 Prepared prepare(const MeasuredRecord& record, const FitOptions& o) {
   check_measured_record(record);
-  if (!(o.segment_length_s > 0) || !(o.pressure_scale_Pa > 0) || !(o.velocity_scale_m_per_s > 0)) {
-    throw Error("fit", "segment length and noise scales must be > 0");
-  }
+  o.validate();
   Prepared p;
   p.record = &record;
   const std::size_t N = record.size();
@@ -153,15 +152,15 @@ bool simulate_one(const Plant& plant, const Scenario& scenario, const Prepared& 
   init_z(plant.seal_friction(), L.seal_z, L.seal_z_count, P1_0 + P2_0 - 2 * Pa);
   if (plant.guide_friction()) init_z(*plant.guide_friction(), L.guide_z, L.guide_z_count, 0.0);
 
-  IntegratorOptions io;
-  io.t_start_s = 0.0;
-  io.t_end_s = static_cast<double>(seg.n - 1) / prep.rate_Hz;
-  io.relative_tolerance = o.relative_tolerance;
-  io.absolute_tolerance = o.absolute_tolerance;
-  io.max_step_s = scenario.run.max_step_s;
-  io.sample_rate_Hz = prep.rate_Hz;
+  // The scenario's run settings (stepper, step bound, step budget) with the fit's tolerances,
+  // as every simulation builds them (integrator_options).
+  RunParams run = scenario.run;
+  run.duration_s = static_cast<double>(seg.n - 1) / prep.rate_Hz;
+  run.relative_tolerance = o.relative_tolerance;
+  run.absolute_tolerance = o.absolute_tolerance;
+  run.sample_rate_Hz = prep.rate_Hz;
+  IntegratorOptions io = integrator_options(run);
   io.record_events = false;
-  io.max_steps = static_cast<std::size_t>(std::max(1e5, 1e5 * io.t_end_s));
   std::size_t count = 0;
   const auto observer = [&](double, std::span<const double> s, const Mode&) {
     if (count >= seg.n) return;

@@ -63,6 +63,8 @@ struct VerdictOptions {
   /// Self-repetition veto: a record that repeats itself at one lag over most of its length,
   /// with a mismatch that does not grow at the claimed rate, has no exponential divergence.
   SelfRepetitionOptions repetition;
+  /// Throws Error naming the first threshold out of its range (a NaN is out of every range).
+  void validate() const;
 };
 
 /// The numbers the verdict reads (computed by analyze_series).

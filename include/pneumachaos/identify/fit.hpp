@@ -54,6 +54,8 @@ struct FitOptions {
   double relative_tolerance = 1.0e-8;
   double absolute_tolerance = 1.0e-10;
   bool verbose = false;  ///< print Ceres's per-iteration progress to stderr
+  /// Throws Error naming the first field out of its range.
+  void validate() const;
 };
 
 /// A scenario key as fitted (the friction fits have their own FittedParameter, named as the
