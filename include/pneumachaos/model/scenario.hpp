@@ -110,10 +110,11 @@ struct Scenario {
   void set_total_moving_mass(double kg);
 };
 
-/// The built-in default scenario: the virtual rig that shows the paper's regimes (a load on
-/// its own guide coupled to the rod, LuGre friction with a wide Stribeck drop on the seal,
-/// chamber volumes at 420 mm of the 500 mm stroke), at the paper's chaotic point S1 = 2.70,
-/// S2 = 0.35 mm^2. Every value and its reasoning: docs/virtual_rig.md and docs/scenario.md.
+/// The built-in default scenario: the virtual rig (a 1.5 kg load on its own guide coupled to a
+/// 1.05 kg piston + rod by a compliant mount, a generalized Maxwell-slip seal on a wide
+/// Stribeck curve, chamber volumes following the piston over a 500 mm stroke), at the paper's
+/// chaotic point S1 = 2.70, S2 = 0.35 mm^2. Every value and its reasoning: docs/virtual_rig.md
+/// and docs/scenario.md.
 Scenario default_scenario();
 
 /// The simple rig: one rigid moving mass, Stribeck seal friction with true stiction, volumes
