@@ -15,7 +15,7 @@
 
 #include "../tests/reference_series.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/analysis/log_array.hpp"
+#include "analysis/log_array.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 #include "pneumachaos/sweep/sweep.hpp"

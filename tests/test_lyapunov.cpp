@@ -11,7 +11,7 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
-#include "pneumachaos/analysis/log_array.hpp"
+#include "analysis/log_array.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "reference_series.hpp"

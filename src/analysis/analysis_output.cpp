@@ -10,7 +10,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
-#include "pneumachaos/io/json_quantity.hpp"
+#include "io/json_quantity.hpp"
 
 namespace pneumachaos {
 namespace {

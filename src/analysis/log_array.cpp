@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/log_array.hpp"
+#include "log_array.hpp"
 
 #include <bit>
 #include <cassert>

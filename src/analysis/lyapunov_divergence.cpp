@@ -9,7 +9,7 @@
 #include "divergence_uncertainty.hpp"
 #include "pneumachaos/analysis/continuous_alignment.hpp"
 #include "pneumachaos/analysis/linear_region.hpp"
-#include "pneumachaos/analysis/log_array.hpp"
+#include "log_array.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 

@@ -1,4 +1,4 @@
-#include "pneumachaos/core/module_loader.hpp"
+#include "module_loader.hpp"
 
 #include <dlfcn.h>
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "pneumachaos/io/json_quantity.hpp"
+#include "io/json_quantity.hpp"
 
 namespace pneumachaos {
 

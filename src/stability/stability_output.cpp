@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pneumachaos/io/json_quantity.hpp"
+#include "io/json_quantity.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "mpi_transport.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/core/module_loader.hpp"
+#include "core/module_loader.hpp"
 
 namespace pneumachaos::detail {
 namespace {
