@@ -4,6 +4,7 @@
 # (which evaluates it) and gives the full sweep's line.
 set -euo pipefail
 cli=$1
+source "$(dirname "$0")/kill_mid_sweep.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 args=(sweep --grid circuit.S1_mm2=2.45:3.70:0.25 --grid circuit.S2_mm2=0.05:0.95:0.15
@@ -13,15 +14,7 @@ adaptive=(--adaptive --adaptive-step 2)
 "$cli" "${args[@]}" "${adaptive[@]}" --out "$work/adaptive" >"$work/adaptive.log"
 grep -q "^adaptive: [0-9]* of 42 points evaluated" "$work/adaptive.log" || { cat "$work/adaptive.log"; exit 1; }
 "$cli" "${args[@]}" "${adaptive[@]}" --out "$work/killed" >/dev/null &
-pid=$!
-for _ in $(seq 1 2000); do
-  lines=$(wc -l < "$work/killed/journal.csv" 2>/dev/null || echo 0)
-  [ "$lines" -ge 4 ] && break
-  sleep 0.005
-done
-kill -9 "$pid" 2>/dev/null || true
-wait "$pid" 2>/dev/null || true
-[ -f "$work/killed/runs.csv" ] && { echo "results written before the sweep finished"; exit 1; }
+kill_mid_sweep "$work/killed" $!
 "$cli" "${args[@]}" "${adaptive[@]}" --out "$work/killed" --resume >/dev/null
 for f in runs.csv points.csv summary.json; do cmp "$work/adaptive/$f" "$work/killed/$f"; done
 # A full sweep's resume into the adaptive directory is another sweep.

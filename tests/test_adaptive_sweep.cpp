@@ -2,43 +2,28 @@
 // for bit, their files do not depend on threads or resumes, and (label long) their maps agree
 // with the full grid's on the paper's grid.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
+#include "adaptive_cases.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/map_agreement.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
-#include "variant_scenarios.hpp"
+#include "sweep_test_files.hpp"
 
 namespace pneumachaos {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<std::string> lines_of(const std::string& path) {
   std::istringstream in(slurp(path));
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
-}
-
-std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("pneumachaos_adaptive_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
 }
 
 // 6 x 7 points of 2 s runs with varied friction: stick-slip at the lowest S2, not above.
@@ -62,7 +47,7 @@ SweepSummary run_into(const SweepSpec& spec, const std::string& dir, std::size_t
 }
 
 TEST(AdaptiveSweep, EvaluatedRunsAreTheFullSweepsRecordsAndTheRestIsInferred) {
-  const std::string full_dir = temp_dir("full"), adaptive_dir = temp_dir("adaptive");
+  const std::string full_dir = temp_dir("adaptive_full"), adaptive_dir = temp_dir("adaptive_map");
   const SweepSummary full = run_into(small_map(false), full_dir);
   const SweepSummary adaptive = run_into(small_map(true), adaptive_dir);
   ASSERT_GT(adaptive.inferred_points, 0u);
@@ -99,7 +84,8 @@ TEST(AdaptiveSweep, EvaluatedRunsAreTheFullSweepsRecordsAndTheRestIsInferred) {
 
 TEST(AdaptiveSweep, FilesDoNotDependOnThreadsOrAResumeAndItsIdentityIsItsOwn) {
   const SweepSpec spec = small_map(true);
-  const std::string one = temp_dir("t1"), two = temp_dir("t2"), part = temp_dir("part");
+  const std::string one = temp_dir("adaptive_t1"), two = temp_dir("adaptive_t2");
+  const std::string part = temp_dir("adaptive_part");
   run_into(spec, one, 1);
   run_into(spec, two, 2);
   // A kill after the lattice and a few refined runs, with a torn line.
@@ -149,39 +135,30 @@ TEST(AdaptiveSweep, NeedsExactlyTwoAxesAndACoarseStep) {
 // Issue 35's validation (label long; docs/sweep.md "Adaptive maps"): the paper's grid, 5
 // runs per point, full against adaptive in the same process. Goals: >= 99 % of points in the
 // same stick-slip class, >= 98 % in the same chaos class, each region's area within its
-// border's length in grid steps, and (on the default rig's map) >= 4x fewer runs.
-void validate_on_paper_grid(const std::string& name, const Scenario& base, double min_ratio) {
-  SweepSpec spec;
-  spec.base = base;
-  spec.base.variation.friction_rel_sd = 0.03;  // as reproduce's maps
-  spec.base.variation.texture_rel = 0.02;
-  spec.axes = paper_valve_grid();
-  spec.repeats = 5;
-  const std::string full_dir = temp_dir(name + "_full"), adaptive_dir = temp_dir(name);
-  const auto t0 = std::chrono::steady_clock::now();
-  const SweepSummary full = run_into(spec, full_dir);
-  const auto t1 = std::chrono::steady_clock::now();
-  spec.adaptive.enabled = true;
-  const SweepSummary adaptive = run_into(spec, adaptive_dir);
-  const auto t2 = std::chrono::steady_clock::now();
-  const MapAgreement m = compare_maps(spec, full, adaptive);
-  const double wall_ratio = std::chrono::duration<double>(t1 - t0).count() /
-                            std::chrono::duration<double>(t2 - t1).count();
-  std::cout << name << ": " << m.describe() << "; wall " << wall_ratio << "x shorter\n";
-  EXPECT_GE(m.stick_slip_agreement, 0.99) << name;
-  EXPECT_GE(m.chaos_agreement, 0.98) << name;
-  EXPECT_TRUE(m.areas_within_borders()) << name;
-  EXPECT_GE(m.runs_ratio(), min_ratio) << name;
-  std::filesystem::remove_all(full_dir);
-  std::filesystem::remove_all(adaptive_dir);
-}
-
+// border's length in grid steps, and on the paper's maps >= 4x fewer runs. The Fig. 4 map,
+// the simple rig and the default rig at small S1 here; all six maps: bench/bench_adaptive.
 TEST(AdaptiveSweep, PaperGridAgreesWithTheFullGrid) {
   if (std::getenv("PNEUMACHAOS_LONG_TESTS") == nullptr) {
     GTEST_SKIP() << "a long check: ctest --test-dir build -L long";
   }
-  validate_on_paper_grid("fig4 (Ps 0.25 MPa, m 1.5 kg)", default_scenario(), 4.0);
-  validate_on_paper_grid("simple rig", variant_scenario("simple_rig.toml"), 1.0);
+  for (const AdaptiveCase& c : adaptive_cases(PNEUMACHAOS_VARIANTS_DIR)) {
+    if (c.name.rfind("fig4", 0) != 0 && c.name.rfind("simple", 0) != 0 &&
+        c.name.rfind("default", 0) != 0) {
+      continue;
+    }
+    SweepOptions o;
+    o.progress = false;
+    o.out_dir = temp_dir("adaptive_validation");
+    const AdaptiveValidation v = validate_adaptive(c.spec, o);
+    const MapAgreement& m = v.agreement;
+    std::cout << c.name << ": " << m.describe() << "; wall " << v.full_wall_s << " s full, "
+              << v.adaptive_wall_s << " s adaptive\n";
+    EXPECT_GE(m.stick_slip_agreement, 0.99) << c.name;
+    EXPECT_GE(m.chaos_agreement, 0.98) << c.name;
+    EXPECT_TRUE(m.areas_within_borders()) << c.name;
+    EXPECT_GE(m.runs_ratio(), c.min_runs_ratio) << c.name;
+    std::filesystem::remove_all(o.out_dir);
+  }
 }
 
 }  // namespace

@@ -41,9 +41,8 @@ TEST(GridRefinement, AUniformFieldCostsOnlyTheCoarseLattice) {
 }
 
 TEST(GridRefinement, ADiskIsFoundAndItsBorderFollowed) {
-  const Outcome o = refine([](std::size_t i, std::size_t j) {
-    return std::hypot(i - 11.3, j - 16.6) < 6.2 ? 1 : 0;
-  });
+  const Outcome o = refine(
+      [](std::size_t i, std::size_t j) { return std::hypot(i - 11.3, j - 16.6) < 6.2 ? 1 : 0; });
   EXPECT_EQ(o.wrong, 0u);
   EXPECT_LT(o.evaluated, kN0 * kN1 / 2);
 }
@@ -74,8 +73,7 @@ TEST(GridRefinement, AOneCellStripeBetweenTheLatticesPointsIsMissed) {
   EXPECT_EQ(row.evaluated, 8u * 9u);
   // i == j + 2 meets no lattice point ((25, 23) is not one; (25, 24) would be, and i == j + 1
   // is found through it and followed).
-  const Outcome diagonal =
-      refine([](std::size_t i, std::size_t j) { return i == j + 2 ? 1 : 0; });
+  const Outcome diagonal = refine([](std::size_t i, std::size_t j) { return i == j + 2 ? 1 : 0; });
   EXPECT_EQ(diagonal.wrong, kN0 - 2);
   EXPECT_EQ(refine([](std::size_t i, std::size_t j) { return i == j + 1 ? 1 : 0; }).wrong, 0u);
   // A coarse step of 1 is the full grid: nothing is missed, nothing saved.
@@ -105,8 +103,7 @@ TEST(GridRefinement, BatchesAreNewAscendingPointsAndTheFirstIsTheLattice) {
 }
 
 TEST(GridRefinement, AnAxisOfOneValueIsALine) {
-  const RefinementResult r =
-      refine_grid(1, 9, 4, [](std::size_t p) { return p >= 3 ? 1 : 0; });
+  const RefinementResult r = refine_grid(1, 9, 4, [](std::size_t p) { return p >= 3 ? 1 : 0; });
   for (std::size_t p = 0; p < 9; ++p) EXPECT_EQ(r.source[p] >= 3, p >= 3) << p;
   EXPECT_THROW(GridRefinement(0, 3, 1), Error);
   EXPECT_THROW(GridRefinement(3, 3, 0), Error);

@@ -56,8 +56,7 @@ bool GridRefinement::uniform(const Cell& c, const std::vector<int>& classes) con
 
 // Halves the cell along each axis it spans more than one step of; marks the children's
 // corners in `asked`.
-void GridRefinement::split(const Cell& c, std::vector<Cell>& into,
-                           std::vector<char>& asked) const {
+void GridRefinement::split(const Cell& c, std::vector<Cell>& into, std::vector<char>& asked) const {
   std::vector<std::pair<std::size_t, std::size_t>> a{{c.i0, c.i1}}, b{{c.j0, c.j1}};
   if (c.i1 - c.i0 > 1) a = {{c.i0, (c.i0 + c.i1) / 2}, {(c.i0 + c.i1) / 2, c.i1}};
   if (c.j1 - c.j0 > 1) b = {{c.j0, (c.j0 + c.j1) / 2}, {(c.j0 + c.j1) / 2, c.j1}};
@@ -76,7 +75,8 @@ std::vector<std::size_t> GridRefinement::next(const std::vector<int>& classes) {
   if (!started_) {
     started_ = true;
     for (const auto& [i0, i1] : intervals(lattice(n0_, step_)))
-      for (const auto& [j0, j1] : intervals(lattice(n1_, step_))) cells_.push_back({i0, i1, j0, j1});
+      for (const auto& [j0, j1] : intervals(lattice(n1_, step_)))
+        cells_.push_back({i0, i1, j0, j1});
     for (const Cell& c : cells_)
       for (std::size_t i : {c.i0, c.i1})
         for (std::size_t j : {c.j0, c.j1}) asked[i * n1_ + j] = 1;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <functional>
 
 #include "pneumachaos/core/error.hpp"
@@ -47,8 +48,8 @@ std::string MapAgreement::describe() const {
   std::string s = fmt::format(
       "{} points, {} inferred; stick-slip class agrees at {:.2f} %, chaos class at {:.2f} %; "
       "{} of {} runs ({:.2f}x fewer)",
-      points, inferred_points, 100.0 * stick_slip_agreement, 100.0 * chaos_agreement,
-      adaptive_runs, full_runs, runs_ratio());
+      points, inferred_points, 100.0 * stick_slip_agreement, 100.0 * chaos_agreement, adaptive_runs,
+      full_runs, runs_ratio());
   for (const RegionAgreement& r : regions) {
     s += fmt::format("; {} area {} vs {} points (error {}, border {} steps)", r.region,
                      r.adaptive_points, r.full_points, r.area_error(), r.border_steps);
@@ -69,8 +70,8 @@ MapAgreement compare_maps(const SweepSpec& spec, const SweepSummary& full,
   m.adaptive_runs = adaptive.runs;
   std::size_t same_ss = 0, same_chaos = 0;
   for (std::size_t p = 0; p < m.points; ++p) {
-    same_ss += in_stick_slip_region(full.per_point[p]) ==
-               in_stick_slip_region(adaptive.per_point[p]);
+    same_ss +=
+        in_stick_slip_region(full.per_point[p]) == in_stick_slip_region(adaptive.per_point[p]);
     same_chaos += chaos_class(full.per_point[p]) == chaos_class(adaptive.per_point[p]);
   }
   m.stick_slip_agreement = static_cast<double>(same_ss) / m.points;
@@ -86,6 +87,23 @@ MapAgreement compare_maps(const SweepSpec& spec, const SweepSummary& full,
       [](const PointSummary& p) { return chaos_class(p) != ChaosClass::kNone; }, n1, full,
       adaptive));
   return m;
+}
+
+AdaptiveValidation validate_adaptive(SweepSpec spec, const SweepOptions& options) {
+  AdaptiveValidation v;
+  const auto timed = [&](bool adaptive, double& wall_s) {
+    spec.adaptive.enabled = adaptive;
+    SweepOptions o = options;
+    o.out_dir = options.out_dir + (adaptive ? "/adaptive" : "/full");
+    const auto t0 = std::chrono::steady_clock::now();
+    SweepSummary s = run_sweep(spec, o);
+    wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return s;
+  };
+  v.full = timed(false, v.full_wall_s);
+  v.adaptive = timed(true, v.adaptive_wall_s);
+  v.agreement = compare_maps(spec, v.full, v.adaptive);
+  return v;
 }
 
 }  // namespace pneumachaos

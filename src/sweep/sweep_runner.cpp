@@ -17,9 +17,9 @@
 
 #include "distribution.hpp"
 #include "journal.hpp"
-#include "pneumachaos/sweep/grid_refinement.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/variation.hpp"
+#include "pneumachaos/sweep/grid_refinement.hpp"
 #include "sweep_outputs.hpp"
 
 namespace pneumachaos {

@@ -53,8 +53,9 @@ void SweepSpec::validate() const {
   model_exponent.validate(base.run.duration_s);
   if (!adaptive.enabled) return;
   if (axes.size() != 2) {
-    throw Error("adaptive", fmt::format("refines a map over exactly two grid axes; this sweep has {}",
-                                        axes.size()));
+    throw Error(
+        "adaptive",
+        fmt::format("refines a map over exactly two grid axes; this sweep has {}", axes.size()));
   }
   if (adaptive.coarse_step == 0) throw Error("adaptive step", "must be at least 1");
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pneumachaos/sweep/sweep.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos {
 
@@ -41,5 +42,17 @@ struct MapAgreement {
 /// they differ in their points.
 MapAgreement compare_maps(const SweepSpec& spec, const SweepSummary& full,
                           const SweepSummary& adaptive);
+
+struct AdaptiveValidation {
+  SweepSummary full, adaptive;
+  MapAgreement agreement;
+  double full_wall_s = 0.0, adaptive_wall_s = 0.0;  ///< each sweep's wall time, this process
+};
+
+/// Runs `spec` (two axes; its `adaptive` settings, enabled or not, give the coarse step) over
+/// its full grid into options.out_dir/full and adaptively into options.out_dir/adaptive, one
+/// after the other in this process, and compares the maps. With options.resume a finished
+/// pair is re-read (then the wall times say nothing).
+AdaptiveValidation validate_adaptive(SweepSpec spec, const SweepOptions& options);
 
 }  // namespace pneumachaos
