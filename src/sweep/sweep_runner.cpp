@@ -130,8 +130,8 @@ class Progress {
 };
 
 // Runs `pending` on threads, journaling each finished run; stops taking new runs after the
-// journal fails and rethrows that failure.
-// `total` counts the runs of the sweep known so far (an adaptive sweep learns its own).
+// journal fails and rethrows that failure. `total`: the sweep's runs known so far, for the
+// progress (an adaptive sweep learns its total round by round).
 void run_pending(const SweepSpec& spec, const SweepOptions& options,
                  const std::vector<std::size_t>& pending, std::size_t total,
                  detail::Journal& journal, std::vector<RunRecord>& records,
