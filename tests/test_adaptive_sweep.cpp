@@ -113,6 +113,44 @@ TEST(AdaptiveSweep, FilesDoNotDependOnThreadsOrAResumeAndItsIdentityIsItsOwn) {
   for (const auto& d : {one, two, part}) std::filesystem::remove_all(d);
 }
 
+// compare_maps on a 2 x 3 map whose stick-slip region (points 0 and 1) lost point 1.
+TEST(AdaptiveSweep, CompareMapsCountsAgreementAreasAndBorders) {
+  SweepSpec spec;
+  spec.axes = {parse_grid_axis("circuit.S1_mm2=1:2:1"), parse_grid_axis("circuit.S2_mm2=1:3:1")};
+  SweepSummary full, adaptive;
+  for (std::size_t p = 0; p < 6; ++p) {
+    PointSummary ps;
+    ps.runs = 5;
+    ps.stick_slip_incidence = p < 2 ? 1.0 : 0.0;
+    ps.chaos_incidence = p == 5 ? 0.4 : 0.0;
+    ps.regime_incidence = {1.0, 0.0};
+    full.per_point.push_back(ps);
+  }
+  full.runs = 30;
+  adaptive = full;
+  adaptive.per_point[1].stick_slip_incidence = 0.0;
+  adaptive.per_point[1].runs = 0;
+  adaptive.per_point[1].inferred = true;
+  adaptive.inferred_points = 1;
+  adaptive.runs = 25;
+  const MapAgreement m = compare_maps(spec, full, adaptive);
+  EXPECT_DOUBLE_EQ(m.stick_slip_agreement, 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(m.chaos_agreement, 1.0);
+  EXPECT_DOUBLE_EQ(m.regime_agreement, 1.0);
+  EXPECT_DOUBLE_EQ(m.runs_ratio(), 30.0 / 25.0);
+  ASSERT_EQ(m.regions.size(), 3u);
+  EXPECT_EQ(m.regions[0].full_points, 2u);
+  EXPECT_EQ(m.regions[0].adaptive_points, 1u);
+  EXPECT_EQ(m.regions[0].area_error(), 1u);
+  EXPECT_EQ(m.regions[0].border_steps, 3u);  // 1-2 along S2; 0-3 and 1-4 along S1
+  EXPECT_EQ(m.regions[2].full_points, 1u);   // chaos in some run: point 5
+  EXPECT_EQ(m.regions[2].border_steps, 2u);
+  EXPECT_TRUE(m.areas_within_borders());
+  SweepSpec one_axis = spec;
+  one_axis.axes.pop_back();
+  EXPECT_THROW(compare_maps(one_axis, full, adaptive), Error);
+}
+
 TEST(AdaptiveSweep, NeedsExactlyTwoAxesAndACoarseStep) {
   SweepSpec spec = small_map(true);
   spec.axes.pop_back();

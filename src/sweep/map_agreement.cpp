@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 
@@ -27,6 +28,13 @@ RegionAgreement region(const std::string& name, const Member& in, std::size_t n1
   return r;
 }
 
+// The regime of most of a point's runs (the first of equals); -1 for a point never judged.
+long dominant_regime(const PointSummary& p) {
+  if (p.runs <= p.failed && !p.inferred) return -1;
+  const auto& r = p.regime_incidence;
+  return std::max_element(r.begin(), r.end()) - r.begin();
+}
+
 }  // namespace
 
 std::size_t RegionAgreement::area_error() const {
@@ -46,10 +54,10 @@ bool MapAgreement::areas_within_borders() const {
 
 std::string MapAgreement::describe() const {
   std::string s = fmt::format(
-      "{} points, {} inferred; stick-slip class agrees at {:.2f} %, chaos class at {:.2f} %; "
-      "{} of {} runs ({:.2f}x fewer)",
-      points, inferred_points, 100.0 * stick_slip_agreement, 100.0 * chaos_agreement, adaptive_runs,
-      full_runs, runs_ratio());
+      "{} points, {} inferred; stick-slip class agrees at {:.2f} %, chaos class at {:.2f} % "
+      "(most frequent regime, not followed: {:.2f} %); {} of {} runs ({:.2f}x fewer)",
+      points, inferred_points, 100.0 * stick_slip_agreement, 100.0 * chaos_agreement,
+      100.0 * regime_agreement, adaptive_runs, full_runs, runs_ratio());
   for (const RegionAgreement& r : regions) {
     s += fmt::format("; {} area {} vs {} points (error {}, border {} steps)", r.region,
                      r.adaptive_points, r.full_points, r.area_error(), r.border_steps);
@@ -68,14 +76,16 @@ MapAgreement compare_maps(const SweepSpec& spec, const SweepSummary& full,
   m.inferred_points = adaptive.inferred_points;
   m.full_runs = full.runs;
   m.adaptive_runs = adaptive.runs;
-  std::size_t same_ss = 0, same_chaos = 0;
+  std::size_t same_ss = 0, same_chaos = 0, same_regime = 0;
   for (std::size_t p = 0; p < m.points; ++p) {
+    same_regime += dominant_regime(full.per_point[p]) == dominant_regime(adaptive.per_point[p]);
     same_ss +=
         in_stick_slip_region(full.per_point[p]) == in_stick_slip_region(adaptive.per_point[p]);
     same_chaos += chaos_class(full.per_point[p]) == chaos_class(adaptive.per_point[p]);
   }
   m.stick_slip_agreement = static_cast<double>(same_ss) / m.points;
   m.chaos_agreement = static_cast<double>(same_chaos) / m.points;
+  m.regime_agreement = static_cast<double>(same_regime) / m.points;
   const std::size_t n1 = spec.axes[1].values.size();
   m.regions.push_back(region("stick-slip", in_stick_slip_region, n1, full, adaptive));
   m.regions.push_back(region(

@@ -28,6 +28,9 @@ struct MapAgreement {
   std::size_t full_runs = 0, adaptive_runs = 0;
   double stick_slip_agreement = 0.0;  ///< share of points in the same stick-slip class
   double chaos_agreement = 0.0;       ///< share of points in the same chaos class (none/some/all)
+  /// Share of points with the same most frequent regime (sweep_regime_names(), e.g. steady or
+  /// periodic): not what the refinement follows, so an inferred point's may be wrong.
+  double regime_agreement = 0.0;
   std::vector<RegionAgreement> regions;
   /// Full runs per adaptive run.
   [[nodiscard]] double runs_ratio() const;
