@@ -119,13 +119,13 @@ std::vector<std::size_t> GridRefinement::sources() const {
       for (std::size_t j = c.j0; j <= c.j1; ++j) {
         const std::size_t p = i * n1_ + j;
         if (source[p] != kNone) continue;
+        // A cell's corners are evaluated: the nearest one (the lowest index among equals).
         std::size_t best = kNone, best_d = kNone;
-        for (std::size_t a = c.i0; a <= c.i1; ++a) {
-          for (std::size_t b = c.j0; b <= c.j1; ++b) {
-            const std::size_t q = a * n1_ + b;
-            if (evaluated_[q] == 0) continue;
+        for (std::size_t a : {c.i0, c.i1}) {
+          for (std::size_t b : {c.j0, c.j1}) {
             const std::size_t di = a > i ? a - i : i - a, dj = b > j ? b - j : j - b;
-            if (di * di + dj * dj < best_d) best = q, best_d = di * di + dj * dj;
+            const std::size_t q = a * n1_ + b, d = di * di + dj * dj;
+            if (d < best_d || (d == best_d && q < best)) best = q, best_d = d;
           }
         }
         source[p] = best;

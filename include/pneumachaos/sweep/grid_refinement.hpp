@@ -39,8 +39,8 @@ class GridRefinement {
   [[nodiscard]] std::size_t points() const { return n0_ * n1_; }
 
   /// Once next() has returned empty: for every point, the evaluated point whose class and
-  /// values it takes — itself when evaluated, else the nearest evaluated point of its cell
-  /// (the lowest index among equally near ones).
+  /// values it takes — itself when evaluated, else the nearest corner of its cell (the lowest
+  /// index among equally near ones), whose evaluated points all share one class.
   [[nodiscard]] std::vector<std::size_t> sources() const;
 
  private:
