@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -190,7 +191,7 @@ TEST(AdaptiveSweep, PaperGridAgreesWithTheFullGrid) {
     const AdaptiveValidation v = validate_adaptive(c.spec, o);
     const MapAgreement& m = v.agreement;
     std::cout << c.name << ": " << m.describe() << "; wall " << v.full_wall_s << " s full, "
-              << v.adaptive_wall_s << " s adaptive\n";
+              << v.adaptive_wall_s << " s adaptive" << std::endl;  // shown as each map ends
     EXPECT_GE(m.stick_slip_agreement, 0.99) << c.name;
     EXPECT_GE(m.chaos_agreement, 0.98) << c.name;
     EXPECT_TRUE(m.areas_within_borders()) << c.name;
