@@ -160,7 +160,8 @@ std::string stability_map_csv(const Scenario& scenario, const std::vector<std::s
 py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid,
                   std::size_t repeats, std::uint64_t seed, const std::string& out,
                   std::size_t threads, bool resume, const py::object& progress, bool wolf,
-                  std::size_t surrogates, const ModelExponentSpec& model_exponent) {
+                  std::size_t surrogates, const ModelExponentSpec& model_exponent,
+                  bool adaptive, std::size_t adaptive_step) {
   SweepSpec spec;
   spec.base = scenario;
   for (const auto& g : grid) spec.axes.push_back(parse_grid_axis(g));
@@ -170,6 +171,8 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   spec.wolf = wolf;
   spec.surrogates = surrogates;
   spec.model_exponent = model_exponent;
+  spec.adaptive.enabled = adaptive;
+  spec.adaptive.coarse_step = adaptive_step;
   SweepOptions o;
   o.out_dir = out;
   o.threads = threads;
@@ -199,6 +202,7 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   d["stick_slip_points"] = s.stick_slip_points;
   d["chaos_full_points"] = s.chaos_full_points;
   d["chaos_any_points"] = s.chaos_any_points;
+  if (adaptive) d["inferred_points"] = s.inferred_points;
   if (model_exponent.enabled) {
     d["model_chaos_full_points"] = s.model_chaos_full_points;
     d["model_chaos_any_points"] = s.model_chaos_any_points;

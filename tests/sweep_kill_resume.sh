@@ -3,6 +3,7 @@
 # uninterrupted run, and a resume with another seed must be refused.
 set -euo pipefail
 cli=$1
+source "$(dirname "$0")/kill_mid_sweep.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # 42 runs of 10 s records with stick-slip (slow to analyse): the kill lands well before the end.
@@ -10,17 +11,9 @@ args=(sweep --grid circuit.S1_mm2=2.6:2.8:0.1 --grid circuit.S2_mm2=0.05:0.35:0.
       --set variation.friction_rel_sd=0.05 --threads 2)
 "$cli" "${args[@]}" --out "$work/full" >/dev/null
 "$cli" "${args[@]}" --out "$work/killed" >/dev/null &
-pid=$!
 # Wait for a few finished runs, then kill without warning.
-for _ in $(seq 1 2000); do
-  lines=$(wc -l < "$work/killed/journal.csv" 2>/dev/null || echo 0)
-  [ "$lines" -ge 4 ] && break
-  sleep 0.005
-done
-kill -9 "$pid" 2>/dev/null || true
-wait "$pid" 2>/dev/null || true
+kill_mid_sweep "$work/killed" $!
 done_before=$(($(wc -l < "$work/killed/journal.csv") - 1))
-[ -f "$work/killed/runs.csv" ] && { echo "results written before the sweep finished"; exit 1; }
 "$cli" "${args[@]}" --out "$work/killed" --resume >/dev/null
 for f in runs.csv points.csv summary.json; do
   cmp "$work/full/$f" "$work/killed/$f"

@@ -28,6 +28,11 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 mpirun --allow-run-as-root --oversubscribe -np 2 "$cli" "${args[@]}" --out "$work/mpi" >/dev/null
 ls "$work/mpi"/journal.rank1.csv >/dev/null  # both ranks took part
 for f in runs.csv points.csv summary.json; do cmp "$work/local/$f" "$work/mpi/$f"; done
+# An adaptive map: its rounds are batches over the ranks, each rank reading all journals.
+"$cli" "${args[@]}" --adaptive --adaptive-step 2 --out "$work/local_adaptive" >/dev/null
+mpirun --allow-run-as-root --oversubscribe -np 2 "$cli" "${args[@]}" --adaptive \
+  --adaptive-step 2 --out "$work/mpi_adaptive" >/dev/null
+for f in runs.csv points.csv summary.json; do cmp "$work/local_adaptive/$f" "$work/mpi_adaptive/$f"; done
 # One rank cannot open its journal (a directory stands in its place): every rank must stop
 # with a message, none may wait forever for the failed one.
 mkdir -p "$work/broken/journal.rank1.csv"

@@ -249,5 +249,30 @@ TEST(Claims, Fig2PanelsAreLabelledAsThePapers) {
   EXPECT_LT(a, b);
 }
 
+// An adaptive map's figure marks its inferred points; a full map's figure is as before.
+TEST(Report, IncidenceMapMarksInferredPoints) {
+  SweepSpec spec;
+  spec.axes = {parse_grid_axis("circuit.S1_mm2=2.45:2.50:0.05"),
+               parse_grid_axis("circuit.S2_mm2=0.05:0.20:0.15")};
+  SweepSummary s;
+  for (std::size_t p = 0; p < 4; ++p) {
+    PointSummary ps;
+    ps.coordinates = {spec.axes[0].values[p / 2], spec.axes[1].values[p % 2]};
+    s.per_point.push_back(ps);
+  }
+  const FigureSpec full = incidence_map_figure("m", "t", spec, s);
+  EXPECT_EQ(full.data.size(), 2u);
+  EXPECT_EQ(full.plot.find("inferred"), std::string::npos);
+  s.per_point[3].inferred = true;
+  s.inferred_points = 1;
+  const FigureSpec adaptive = incidence_map_figure("m", "t", spec, s);
+  ASSERT_EQ(adaptive.data.size(), 3u);
+  EXPECT_EQ(adaptive.data[2].first, "m_inferred.dat");
+  EXPECT_NE(adaptive.data[2].second.find("\n2.5 0.2\n"), std::string::npos)
+      << adaptive.data[2].second;
+  EXPECT_NE(adaptive.plot.find("'m_inferred.dat' using 1:2 with points"), std::string::npos);
+  EXPECT_NE(adaptive.caption.find("1 of the 4 points were not run"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pneumachaos

@@ -13,24 +13,11 @@
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
+#include "sweep_test_files.hpp"
 #include "variant_scenarios.hpp"
 
 namespace pneumachaos {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("pneumachaos_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
 
 SweepSpec small_spec(std::vector<std::string> sets = {}) {
   SweepSpec spec;

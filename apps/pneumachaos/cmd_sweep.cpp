@@ -64,6 +64,7 @@ struct SweepArgs {
   bool wolf = false;
   std::optional<std::string> surrogates;
   ModelExponentSpec model;
+  AdaptiveSpec adaptive;
   std::string replay;
   std::string record;
 };
@@ -102,6 +103,15 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
                   "in `analyze`: 0 (default, off) or 19 to 999; 39 add about 1.2 s of CPU per 10 s "
                   "run");
   add_model_exponent_options(cmd, a.model);
+  CLI::Option* adaptive = cmd->add_flag(
+      "--adaptive", a.adaptive.enabled,
+      "for a map over two axes: run a coarse lattice of the grid, then refine only the cells "
+      "whose points differ (stick-slip, chaos in none / some / all runs, failed runs) down to "
+      "the grid's step; the other points are inferred from their cell (points.csv: inferred)");
+  cmd->add_option("--adaptive-step", a.adaptive.coarse_step,
+                  "with --adaptive: grid steps between the coarse lattice's lines (default 4); "
+                  "a region narrower than this between the lattice's points can be missed")
+      ->needs(adaptive);
   cmd->add_option("--replay", a.replay,
                   "POINT:REPEAT: run only that run of this sweep again (same grid, repeats, seed "
                   "and analysis options such as --surrogates) and write its record; its "
@@ -123,6 +133,7 @@ SweepSpec sweep_spec_from(const SweepArgs& a) {
   spec.wolf = a.wolf;
   spec.surrogates = surrogate_count_option(a.surrogates, 0);
   spec.model_exponent = a.model;
+  spec.adaptive = a.adaptive;
   return spec;
 }
 
@@ -132,6 +143,10 @@ void print_sweep_summary(const SweepSpec& spec, const SweepSummary& s, const std
       "100 %-chaos region {} points, chaos anywhere {} points; results in {}\n",
       s.points, spec.repeats, s.runs, s.failed, s.stick_slip_points, s.chaos_full_points,
       s.chaos_any_points, out);
+  if (spec.adaptive.enabled) {
+    fmt::print("adaptive: {} of {} points evaluated, {} inferred; {} of the full grid's {} runs\n",
+               s.points - s.inferred_points, s.points, s.inferred_points, s.runs, spec.runs());
+  }
   if (spec.model_exponent.enabled) {
     fmt::print(
         "model exponent beyond 3 sigma: in every run at {} points, in some run at {} "

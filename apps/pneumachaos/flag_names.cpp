@@ -12,7 +12,9 @@ const FlagNames& common_flag_names() {
                                {"model exponent transient", "--model-transient"},
                                {"model exponent measure", "--model-measure"},
                                {"model exponent renormalize", "--model-renormalize"},
-                               {"free parameter", "--free"}};
+                               {"free parameter", "--free"},
+                               {"adaptive", "--adaptive"},
+                               {"adaptive step", "--adaptive-step"}};
   return names;
 }
 

@@ -188,7 +188,7 @@ def _print_progress():
 
 def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
           progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=None,
-          model_measure_s=None, model_renormalize_s=None):
+          model_measure_s=None, model_renormalize_s=None, adaptive=False, adaptive_step=4):
     """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
     summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv.
     progress: True prints "sweep: done/total runs" at most once a second, False prints
@@ -196,11 +196,14 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     CLI's --wolf, --surrogates and --model-exponent with --model-transient, --model-measure
     and --model-renormalize (docs/sweep.md): e.g. model_exponent=True stores each run's model
     exponent, so the verdict can be checked against it (scripts/verdict_vs_model.py); the
-    model settings need model_exponent=True (defaults 1 s, 0 = the rest of the run, 0.02 s)."""
+    model settings need model_exponent=True (defaults 1 s, 0 = the rest of the run, 0.02 s).
+    adaptive=True (a grid of two axes) is the CLI's --adaptive with --adaptive-step: a coarse
+    lattice, then only the cells whose points differ; the summary gains inferred_points and
+    points.csv's `inferred` column marks the points filled from their cell, not run."""
     if not out:
         raise ValueError("sweep: out: a directory for the results is required")
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
-                        ("surrogates", surrogates)):
+                        ("surrogates", surrogates), ("adaptive_step", adaptive_step)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
     if progress is True:
@@ -219,4 +222,5 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
             raise ValueError(f"sweep: model_{name}: needs model_exponent=True")
         setattr(model, name, float(value))
     return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
-                       int(threads), bool(resume), progress, bool(wolf), int(surrogates), model)
+                       int(threads), bool(resume), progress, bool(wolf), int(surrogates), model,
+                       bool(adaptive), int(adaptive_step))

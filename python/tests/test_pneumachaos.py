@@ -172,3 +172,20 @@ def test_friction_and_fit_on_a_simulated_record():
         pc.friction(t, np.ones((2, 2)), p1, p2, rig)
     with pytest.raises(ValueError, match="unknown"):
         pc.fit(t, v, p1, p2, start, free=["circuit.S3_mm2"])
+
+
+def test_adaptive_sweep_marks_inferred_points(tmp_path):
+    """sweep(adaptive=True): the summary counts the inferred points, points.csv marks them in
+    its last column; one axis is refused naming the option."""
+    import csv
+    s = pc.Scenario.default().set("run.duration_s", 2.0)
+    grid = ["circuit.S1_mm2=2.45:3.45:0.25", "circuit.S2_mm2=0.05:0.65:0.15"]
+    summary = pc.sweep(s, grid=grid, repeats=1, out=str(tmp_path / "a"), threads=2,
+                       progress=False, adaptive=True, adaptive_step=2)
+    with open(tmp_path / "a" / "points.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 25 and list(rows[0])[-1] == "inferred"
+    assert summary["inferred_points"] == sum(r["inferred"] == "1" for r in rows)
+    assert all(r["runs"] == "0" for r in rows if r["inferred"] == "1")
+    with pytest.raises(ValueError, match="adaptive: refines a map over exactly two grid axes"):
+        pc.sweep(s, grid=grid[:1], out=str(tmp_path / "b"), adaptive=True)

@@ -148,12 +148,14 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
   const double d2 = s2.size() > 1 ? s2[1] - s2[0] : 0.15;
   std::string grid = "# S1[mm^2] S2[mm^2] chaos_incidence stick_slip_incidence\n";
   std::string outline = "# stick-slip cells (outlined): x y dx dy, one edge per line\n";
+  std::string inferred = "# points inferred from their cell, not run (adaptive map): x y\n";
   std::size_t both = 0;
   for (std::size_t i = 0; i < summary.per_point.size(); ++i) {
     const auto& p = summary.per_point[i];
     grid += fmt::format("{} {} {} {}\n", p.coordinates[0], p.coordinates[1], p.chaos_incidence,
                         p.stick_slip_incidence);
     if ((i + 1) % s2.size() == 0) grid += "\n";
+    if (p.inferred) inferred += fmt::format("{} {}\n", p.coordinates[0], p.coordinates[1]);
     if (p.stick_slip_incidence < 0.5) continue;
     if (p.chaos_incidence > 0.0) ++both;
     // An outline inset into the cell, not a fill: the grey of the chaos incidence stays visible.
@@ -173,10 +175,20 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
   f.data = {{name + ".dat", grid}, {name + "_stick_slip.dat", outline}};
   f.width = 1200;
   f.height = 560;
-  const std::string layers = fmt::format(
+  std::string layers = fmt::format(
       "plot '{0}.dat' using 1:2:3 with image, '{0}_stick_slip.dat' using 1:2:3:4 with vectors "
-      "nohead lc '#d62728' lw 1.5\n",
+      "nohead lc '#d62728' lw 1.5",
       name);
+  if (summary.inferred_points > 0) {  // an adaptive map: say which cells were not run
+    f.caption += fmt::format(
+        " Adaptive map: {} of the {} points were not run but inferred from the evaluated "
+        "corners of their cell (docs/sweep.md, \"Adaptive maps\"); a small blue dot marks each.",
+        summary.inferred_points, summary.per_point.size());
+    f.data.emplace_back(name + "_inferred.dat", inferred);
+    layers += fmt::format(", '{}_inferred.dat' using 1:2 with points pt 7 ps 0.3 lc '#1f77b4'",
+                          name);
+  }
+  layers += "\n";
   f.plot = fmt::format(
       "set multiplot layout 1,2 title '{}'\nset xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\n"
       "set cblabel 'chaos incidence'\nset palette gray negative\nset cbrange [0:1]\n"

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "pneumachaos/analysis/regime.hpp"
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -45,7 +46,32 @@ void summarize_model_exponent(const std::vector<const RunRecord*>& runs, PointSu
   ps.lambda_model_uncertainty = std::sqrt(var) / static_cast<double>(n);
 }
 
+// A point the map judges: one with a successful run, or one inferred from such a point.
+bool judged(const PointSummary& p) { return p.runs > p.failed || p.inferred; }
+
+void count_regions(const SweepSpec& spec, SweepSummary& s) {
+  s.stick_slip_points = s.chaos_full_points = s.chaos_any_points = 0;
+  s.model_chaos_full_points = s.model_chaos_any_points = 0;
+  for (const PointSummary& ps : s.per_point) {
+    if (in_stick_slip_region(ps)) ++s.stick_slip_points;
+    if (chaos_class(ps) == ChaosClass::kAll) ++s.chaos_full_points;
+    if (chaos_class(ps) != ChaosClass::kNone) ++s.chaos_any_points;
+    if (!spec.model_exponent.enabled) continue;
+    if (ps.model_chaos_incidence >= 1.0) ++s.model_chaos_full_points;
+    if (ps.model_chaos_incidence > 0.0) ++s.model_chaos_any_points;
+  }
+}
+
 }  // namespace
+
+bool in_stick_slip_region(const PointSummary& p) {
+  return judged(p) && p.stick_slip_incidence >= 0.5;
+}
+
+ChaosClass chaos_class(const PointSummary& p) {
+  if (!judged(p) || p.chaos_incidence <= 0.0) return ChaosClass::kNone;
+  return p.chaos_incidence >= 1.0 ? ChaosClass::kAll : ChaosClass::kSome;
+}
 
 SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records) {
   SweepSummary s;
@@ -95,14 +121,29 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
       ps.mean_v = kNaN;
     }
     ps.mean_lambda = lambda_count[ps.point] > 0 ? ps.mean_lambda / lambda_count[ps.point] : kNaN;
-    if (ok > 0 && ps.stick_slip_incidence >= 0.5) ++s.stick_slip_points;
-    if (ok > 0 && ps.chaos_incidence >= 1.0) ++s.chaos_full_points;
-    if (ok > 0 && ps.chaos_incidence > 0.0) ++s.chaos_any_points;
-    if (!spec.model_exponent.enabled) continue;
-    summarize_model_exponent(by_point[ps.point], ps);
-    if (ps.model_chaos_incidence >= 1.0) ++s.model_chaos_full_points;
-    if (ps.model_chaos_incidence > 0.0) ++s.model_chaos_any_points;
+    if (spec.model_exponent.enabled) summarize_model_exponent(by_point[ps.point], ps);
   }
+  count_regions(spec, s);
+  return s;
+}
+
+SweepSummary summarize_adaptive(const SweepSpec& spec, const std::vector<RunRecord>& records,
+                                const std::vector<std::size_t>& source) {
+  SweepSummary s = summarize(spec, records);
+  if (source.size() != s.points) throw Error("summarize_adaptive", "one source per grid point");
+  for (std::size_t p = 0; p < s.points; ++p) {
+    if (source[p] == p) continue;
+    PointSummary& ps = s.per_point[p];
+    const PointSummary& from = s.per_point.at(source[p]);
+    ps.stick_slip_incidence = from.stick_slip_incidence;
+    ps.chaos_incidence = from.chaos_incidence;
+    ps.regime_incidence = from.regime_incidence;
+    ps.model_chaos_incidence = from.model_chaos_incidence;
+    ps.mean_v = ps.mean_lambda = kNaN;  // values, unlike classes, are not carried over
+    ps.inferred = true;
+    ++s.inferred_points;
+  }
+  count_regions(spec, s);
   return s;
 }
 

@@ -28,7 +28,8 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                   "mean_lambda_per_s,lambda_model_per_s,lambda_model_uncertainty_per_s,"
                   "model_chaos_incidence";
     for (const auto& name : sweep_regime_names()) f.stream() << ",incidence_" << name;
-    f.stream() << '\n';
+    // Last, so that readers of the columns before it need no change.
+    f.stream() << ",inferred\n";
     for (const PointSummary& p : summary.per_point) {
       f.stream() << p.point << ',';
       for (double c : p.coordinates) f.stream() << fmt::format("{},", c);
@@ -37,7 +38,7 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                                 p.mean_lambda_model, p.lambda_model_uncertainty,
                                 p.model_chaos_incidence);
       for (double share : p.regime_incidence) f.stream() << fmt::format(",{}", share);
-      f.stream() << '\n';
+      f.stream() << (p.inferred ? ",1\n" : ",0\n");
     }
     f.commit();
   }
@@ -53,6 +54,12 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
     j["spec"]["model_exponent_settings"] = {{"transient_s", m.transient_s},
                                             {"measure_s", m.measure_s},
                                             {"renormalize_s", m.renormalize_s}};
+  }
+  if (spec.adaptive.enabled) {
+    j["spec"]["adaptive"] = {{"coarse_step", spec.adaptive.coarse_step}};
+    j["adaptive"] = {{"evaluated_points", summary.points - summary.inferred_points},
+                     {"inferred_points", summary.inferred_points},
+                     {"full_grid_runs", spec.runs()}};
   }
   for (const auto& a : spec.axes) j["spec"]["grid"][a.key] = a.values;
   j["runs"] = summary.runs;

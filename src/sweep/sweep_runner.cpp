@@ -19,6 +19,7 @@
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/variation.hpp"
+#include "pneumachaos/sweep/grid_refinement.hpp"
 #include "sweep_outputs.hpp"
 
 namespace pneumachaos {
@@ -129,15 +130,17 @@ class Progress {
 };
 
 // Runs `pending` on threads, journaling each finished run; stops taking new runs after the
-// journal fails and rethrows that failure.
+// journal fails and rethrows that failure. `total`: the sweep's runs known so far, for the
+// progress (an adaptive sweep learns its total round by round).
 void run_pending(const SweepSpec& spec, const SweepOptions& options,
-                 const std::vector<std::size_t>& pending, detail::Journal& journal,
-                 std::vector<RunRecord>& records, const detail::Distribution& dist) {
+                 const std::vector<std::size_t>& pending, std::size_t total,
+                 detail::Journal& journal, std::vector<RunRecord>& records,
+                 const detail::Distribution& dist) {
   std::mutex mutex;
   std::size_t finished = 0;
   std::exception_ptr failure;
-  Progress progress(options.progress && ::isatty(STDERR_FILENO) != 0, spec.runs(),
-                    spec.runs() - pending.size());
+  Progress progress(options.progress && ::isatty(STDERR_FILENO) != 0, total,
+                    total - pending.size());
   std::atomic<bool> stop{false};
   const auto one = [&](std::size_t k) {
     if (stop) return;  // the journal failed: take no new runs
@@ -153,7 +156,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
     }
     records.push_back(std::move(r));
     progress.update(++finished, pending.size());
-    if (options.on_progress) options.on_progress(spec.runs() - pending.size() + finished, spec.runs());
+    if (options.on_progress) options.on_progress(total - pending.size() + finished, total);
   };
   // oneTBB's work-stealing scheduler, limited to the requested threads by an arena; one run
   // per task (grain 1), as runs differ in cost by an order of magnitude.
@@ -168,6 +171,54 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
   });
   if (failure) std::rethrow_exception(failure);
   journal.sync();
+}
+
+// What an adaptive map tells apart at an evaluated point: the stick-slip region, the chaos
+// class and whether any run failed; a cell whose points differ in it is refined.
+int map_class(const PointSummary& p) {
+  return (in_stick_slip_region(p) ? 1 : 0) + 2 * static_cast<int>(chaos_class(p)) +
+         (p.failed > 0 ? 8 : 0);
+}
+
+// The runs of `points` that are not finished yet and fall to this rank.
+std::vector<std::size_t> pending_at(const SweepSpec& spec, const std::vector<std::size_t>& points,
+                                    const std::vector<RunRecord>& records, const std::string& dir,
+                                    const detail::Distribution& dist) {
+  std::vector<char> done = finished_runs(spec, records, dir);
+  std::vector<char> wanted(done.size(), 0);
+  for (std::size_t p : points)
+    for (std::size_t r = 0; r < spec.repeats; ++r) wanted[p * spec.repeats + r] = 1;
+  for (std::size_t i = 0; i < done.size(); ++i) done[i] = done[i] != 0 || wanted[i] == 0;
+  return pending_runs(done, dist);
+}
+
+// The refinement's rounds, each a batch of points run on threads (and ranks): every rank
+// derives the same batches from the same records, so it needs every rank's records after each
+// round. A resume replays the rounds, running only what the journals lack. Returns where
+// every point takes its class from.
+std::vector<std::size_t> run_adaptive(const SweepSpec& spec, const SweepOptions& options,
+                                      detail::Journal& journal, std::vector<RunRecord>& records,
+                                      const detail::Distribution& dist, RankFailure& failure) {
+  GridRefinement grid(spec.axes[0].values.size(), spec.axes[1].values.size(),
+                      spec.adaptive.coarse_step);
+  std::vector<int> classes(spec.points(), 0);
+  for (;;) {
+    std::vector<std::size_t> batch;
+    failure.attempt([&] {
+      batch = grid.next(classes);
+      const auto pending = pending_at(spec, batch, records, options.out_dir, dist);
+      run_pending(spec, options, pending, records.size() + pending.size(), journal, records,
+                  dist);
+    });
+    failure.agree(dist, options.out_dir);
+    if (batch.empty()) return grid.sources();
+    failure.attempt([&] {
+      if (dist.size() > 1) records = detail::Journal::read_all(options.out_dir, spec.fingerprint());
+      const SweepSummary so_far = summarize(spec, records);
+      for (std::size_t p : batch) classes[p] = map_class(so_far.per_point[p]);
+    });
+    failure.agree(dist, options.out_dir);
+  }
 }
 
 // Every rank's runs are in its journal once all have finished; read them all back.
@@ -200,18 +251,25 @@ SweepSummary run_sweep(const SweepSpec& spec, const SweepOptions& options) {
   failure.agree(dist, options.out_dir);
   failure.attempt([&] { journal->open(); });
   failure.agree(dist, options.out_dir);
-  failure.attempt([&] {
-    const auto pending = pending_runs(finished_runs(spec, records, options.out_dir), dist);
-    run_pending(spec, options, pending, *journal, records, dist);
-  });
-  failure.agree(dist, options.out_dir);
+  std::vector<std::size_t> sources;
+  if (spec.adaptive.enabled) {
+    sources = run_adaptive(spec, options, *journal, records, dist, failure);
+  } else {
+    failure.attempt([&] {
+      const auto pending = pending_runs(finished_runs(spec, records, options.out_dir), dist);
+      run_pending(spec, options, pending, spec.runs(), *journal, records, dist);
+    });
+    failure.agree(dist, options.out_dir);
+  }
   SweepSummary summary;
   failure.attempt([&] {
-    if (dist.size() > 1) records = merged_records(spec, options.out_dir);
+    // An adaptive sweep has read every rank's records after its last round.
+    if (dist.size() > 1 && !spec.adaptive.enabled) records = merged_records(spec, options.out_dir);
     std::sort(records.begin(), records.end(), [&](const RunRecord& a, const RunRecord& b) {
       return a.index(spec.repeats) < b.index(spec.repeats);
     });
-    summary = summarize(spec, records);
+    summary = spec.adaptive.enabled ? summarize_adaptive(spec, records, sources)
+                                    : summarize(spec, records);
     summary.wrote_files = dist.rank() == 0;
     if (summary.wrote_files) detail::write_sweep_outputs(spec, records, summary, options.out_dir);
   });

@@ -51,6 +51,13 @@ void SweepSpec::validate() const {
   base.validate();
   check_surrogate_count(surrogates, "surrogates");  // up front, not as every run's failure
   model_exponent.validate(base.run.duration_s);
+  if (!adaptive.enabled) return;
+  if (axes.size() != 2) {
+    throw Error(
+        "adaptive",
+        fmt::format("refines a map over exactly two grid axes; this sweep has {}", axes.size()));
+  }
+  if (adaptive.coarse_step == 0) throw Error("adaptive step", "must be at least 1");
 }
 
 std::string SweepSpec::fingerprint() const {
@@ -68,6 +75,8 @@ std::string SweepSpec::fingerprint() const {
   const ModelExponentSpec& m = model_exponent;
   text += fmt::format("model_exponent={} transient={} measure={} renormalize={}\n", m.enabled,
                       m.transient_s, m.measure_s, m.renormalize_s);
+  // Only when on, so that full sweeps keep their fingerprint.
+  if (adaptive.enabled) text += fmt::format("adaptive coarse_step={}\n", adaptive.coarse_step);
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (unsigned char c : text) {
     h ^= c;

@@ -28,6 +28,14 @@ struct ModelExponentSpec {
   [[nodiscard]] ModelLyapunovOptions options(double duration_s) const;
 };
 
+/// Adaptive refinement of a two-axis map (sweep --adaptive, GridRefinement, docs/sweep.md
+/// "Adaptive maps"): the coarse lattice first, then only the cells whose points differ in what
+/// the map shows, down to the grid's own step; every other point is inferred from its cell.
+struct AdaptiveSpec {
+  bool enabled = false;
+  std::size_t coarse_step = 4;  ///< grid steps between the first lattice's lines, >= 1
+};
+
 struct SweepSpec {
   Scenario base;
   std::vector<GridAxis> axes;  ///< default: the paper's S1 x S2 grid
@@ -39,6 +47,7 @@ struct SweepSpec {
   /// `analyze --surrogates N` on a replayed record gives the run's verdict.
   std::size_t surrogates = 0;
   ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
+  AdaptiveSpec adaptive;  ///< needs exactly two axes; part of the fingerprint when enabled
   void validate() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
   [[nodiscard]] std::size_t runs() const { return points() * repeats; }
@@ -112,7 +121,16 @@ struct PointSummary {
   /// successful runs whose exponent is positive beyond 3 of its standard errors.
   double mean_lambda_model = kNaN, lambda_model_uncertainty = kNaN;
   double model_chaos_incidence = kNaN;
+  /// Adaptive maps: not evaluated (runs 0, NaN means) but filled from the evaluated point of
+  /// its cell named by GridRefinement::sources(): its incidences, hence its classes.
+  bool inferred = false;
 };
+
+/// What a map shows at a point (also for an inferred one): stick-slip in at least half of its
+/// successful runs (the stick-slip region); chaos in none, some or all of them.
+enum class ChaosClass { kNone = 0, kSome = 1, kAll = 2 };
+bool in_stick_slip_region(const PointSummary& p);
+ChaosClass chaos_class(const PointSummary& p);
 
 /// Every regime name a run can carry (columns of points.csv).
 const std::vector<std::string>& sweep_regime_names();
@@ -124,11 +142,19 @@ struct SweepSummary {
   std::size_t chaos_any_points = 0;   ///< points chaotic in at least one run
   /// With the model's exponent: points where it is beyond 3 sigma in every / in some run.
   std::size_t model_chaos_full_points = 0, model_chaos_any_points = 0;
+  /// Adaptive maps: points filled from their cell, not evaluated (runs counts only evaluated
+  /// runs; the region counts above include the inferred points).
+  std::size_t inferred_points = 0;
   std::vector<PointSummary> per_point;
   bool wrote_files = true;  ///< false on the MPI ranks other than 0
 };
 
 /// Incidence per point and the map's region areas, from records sorted by (point, repeat).
 SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& records);
+
+/// An adaptive map's summary: `summarize` of the evaluated points' records, with every point p
+/// whose source[p] != p (GridRefinement::sources) filled from that point and marked inferred.
+SweepSummary summarize_adaptive(const SweepSpec& spec, const std::vector<RunRecord>& records,
+                                const std::vector<std::size_t>& source);
 
 }  // namespace pneumachaos
