@@ -33,7 +33,8 @@ Action add_simulate(CLI::App& app) {
   add_scenario_options(cmd, args->scenario);
   cmd->add_option("--duration", args->duration_s, "simulated time [s] (run.duration_s)");
   cmd->add_option("--rate", args->rate_Hz, "output sample rate [Hz] (run.rate_Hz)");
-  cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)");
+  cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)")
+      ->check(output_file_check());
   return [args]() {
     SettingOrigins origins;
     Scenario scenario = args->scenario.file.empty()

@@ -34,7 +34,8 @@ Action add_stability(CLI::App& app) {
   cmd->add_flag("--map", args->map, "evaluate over a grid (default: the paper's S1 x S2 grid)");
   cmd->add_option("--grid", args->grids,
                   "grid axis KEY=FROM:TO:STEP in the key's unit (with --map; repeatable)");
-  cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)");
+  cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)")
+      ->check(output_file_check());
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     StabilityOptions options;
