@@ -172,3 +172,14 @@ def test_friction_and_fit_on_a_simulated_record():
         pc.friction(t, np.ones((2, 2)), p1, p2, rig)
     with pytest.raises(ValueError, match="unknown"):
         pc.fit(t, v, p1, p2, start, free=["circuit.S3_mm2"])
+
+
+def test_set_changes_in_place_and_with_value_copies():
+    """Issue 33: `s2 = s.set(...)` changed s too, unannounced. set is in place and says so;
+    with_value returns a changed copy and leaves the original alone."""
+    s = pc.Scenario.default()
+    assert "IN PLACE" in pc.Scenario.set.__doc__
+    s2 = s.with_value("circuit.S2_mm2", 1.0)
+    assert s.get("circuit.S2_mm2") == "0.35"
+    assert s2.get("circuit.S2_mm2") == "1"
+    assert s.set("circuit.S2_mm2", 0.5) is s
