@@ -43,22 +43,24 @@ CLI::Validator input_record_check() {
       "FILE|-");
 }
 
-CLI::Validator output_file_check() {
+namespace {
+
+// A CLI11 check from one of the library's output-path rules ("" = fine, else the problem).
+CLI::Validator path_check(std::string (*problem_of)(const std::string&), const char* name) {
   return CLI::Validator(
-      [](std::string& path) {
-        const std::string problem = output_file_problem(path);
+      [problem_of](std::string& path) {
+        const std::string problem = problem_of(path);
         return problem.empty() ? std::string() : path + " " + problem;
       },
-      "OUTPUT FILE");
+      name);
 }
 
+}  // namespace
+
+CLI::Validator output_file_check() { return path_check(&output_file_problem, "OUTPUT FILE"); }
+
 CLI::Validator output_directory_check() {
-  return CLI::Validator(
-      [](std::string& path) {
-        const std::string problem = output_directory_problem(path);
-        return problem.empty() ? std::string() : path + " " + problem;
-      },
-      "OUTPUT DIR");
+  return path_check(&output_directory_problem, "OUTPUT DIR");
 }
 
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) {
