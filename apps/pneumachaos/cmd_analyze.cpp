@@ -51,8 +51,10 @@ Action add_analyze(CLI::App& app) {
       ->check(input_record_check());
   cmd->add_option("--column", args->column,
                   "column to analyse: header name (default v), or its number in a file "
-                  "without a header (default 1)");
-  cmd->add_option("--rate", args->rate_Hz, "sample rate [Hz] when the file has no time column");
+                  "without a header (default 1, unless that column looks like a clock)");
+  cmd->add_option("--rate", args->rate_Hz,
+                  "sample rate [Hz] of a file without a time column (with one, the two must "
+                  "agree)");
   cmd->add_option("--from", args->from_s,
                   "analyse from this time [s] on the record's clock (e.g. 2 to skip a start-up "
                   "transient, as `reproduce` does; default: the first sample)");
