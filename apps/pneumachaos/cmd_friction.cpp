@@ -84,7 +84,8 @@ Action add_friction(CLI::App& app) {
     for (const auto& f : fits.fits)
       if (f.name == fits.preferred_model) preferred = &f;
     if (!args->scenario_out.empty() && !preferred)
-      throw RunError("--scenario-out", "no model could be fitted (see above); no output written");
+      throw RunError("--scenario-out",
+                     "no model converged with Fc <= Fs (see above); no output written");
     OutputSet outputs;
     if (!args->json.empty())
       outputs.add(args->json) << identify::friction_json(estimate, fits, settings, record.source) << '\n';
