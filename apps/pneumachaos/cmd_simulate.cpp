@@ -51,6 +51,7 @@ Action add_simulate(CLI::App& app) {
     flag("run.duration_s", args->duration_s, "--duration");
     flag("run.rate_Hz", args->rate_Hz, "--rate");
     validate_scenario(scenario, origins);
+    for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "simulate: note: {}\n", n);
     const Plant plant(scenario);
     const SimulationResult result = simulate(plant, scenario.run);
     fmt::print(stderr, "simulate: {}\n", describe(result.summary));

@@ -38,6 +38,7 @@ Action add_stability(CLI::App& app) {
       ->check(output_file_check());
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
+    for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "stability: note: {}\n", n);
     StabilityOptions options;
     if (args->position_mm) {
       const double stroke_mm = scenario.cylinder.stroke_m * 1e3;

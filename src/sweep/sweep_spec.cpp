@@ -34,6 +34,7 @@ std::vector<std::string> SweepSpec::warnings() const {
         "variation.friction_rel_sd=0.03 --set variation.texture_rel=0.02; or use --repeats 1",
         repeats));
   }
+  for (const auto& n : scenario_notes(base)) w.push_back(n);
   return w;
 }
 
