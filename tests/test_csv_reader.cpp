@@ -153,5 +153,41 @@ TEST(CsvReader, LinesAndFieldsAsAStreamWouldCutThem) {
   EXPECT_EQ(b.channels().front().values[1], 4.0);
 }
 
+// Issue 33: a rate that disagrees with the time column, a headerless file whose first column
+// is a clock, and a ';'-separated export are refused with what to do, never read silently.
+TEST(CsvReader, ARateMustAgreeWithTheTimeColumn) {
+  CsvSeriesOptions o;
+  o.rate_Hz = 2000.0;
+  EXPECT_EQ(error_of("t[s],v\n0,1\n0.001,2\n0.002,3\n", o),
+            "sampling rate: 2000 Hz disagrees with the time column \"t[s]\" of rec.csv, sampled "
+            "at 1000 Hz: drop the rate option to use the time column, or correct one of them");
+  o.rate_Hz = 1000.0;  // agreeing: read, on the file's own clock
+  const auto s = parse_csv_series("t,v\n4,1\n4.001,2\n4.002,3\n", "rec.csv", o);
+  EXPECT_NEAR(s.rate_Hz(), 1000.0, 1e-6);
+  EXPECT_EQ(s.start_s(), 4.0);
+}
+
+TEST(CsvReader, AHeaderlessClockColumnIsNotAnalysedByDefault) {
+  CsvSeriesOptions o;
+  o.rate_Hz = 1000.0;
+  const std::string text = "0 5\n0.001 6\n0.002 4\n0.003 5\n";
+  EXPECT_EQ(error_of(text, o),
+            "rec.csv:1: the file has no header and its first column rises at a constant step of "
+            "0.001, like a time column: name the column to analyse, e.g. --column 2 (or --column "
+            "1 to analyse the first column anyway)");
+  o.column = "1";
+  EXPECT_EQ(parse_csv_series(text, "rec.csv", o).channels().front().values[3], 0.003);
+  o.column = "v";  // a first column that is no clock is read as before
+  EXPECT_EQ(parse_csv_series("1 5\n0.5 6\n2 4\n", "rec.csv", o).channels().front().values[1], 0.5);
+}
+
+TEST(CsvReader, SemicolonsAreRecognisedAndExplained) {
+  const std::string e = error_of("t;v\n0;1,5\n0,001;2,5\n");
+  EXPECT_NE(e.find("no column \"v\" in the header; it has: t;v; the fields look separated by "
+                   "';'"),
+            std::string::npos) << e;
+  EXPECT_NE(e.find("tr ',;' '.,'"), std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace pneumachaos

@@ -5,7 +5,11 @@
 #include <numbers>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "reference_series.hpp"
 
@@ -129,6 +133,76 @@ TEST(Regime, TooShortOrNonFiniteSeriesIsAnError) {
   EXPECT_THROW(analyze_series(x, 1000.0), Error);
   const AnalysisResult few = analyze_series(white_noise(500), 1000.0);
   EXPECT_EQ(few.verdict.regime, Regime::kUndetermined);  // below VerdictOptions::min_samples
+}
+
+// Issue 33: with no linear region there is no exponent, so its uncertainty is null too (it was
+// the spread of placeholder zeros).
+TEST(Regime, NoDivergenceValueMeansNoUncertainty) {
+  std::vector<double> damped(10000);
+  for (std::size_t i = 0; i < damped.size(); ++i) {
+    const double t = static_cast<double>(i);
+    damped[i] = 0.066 + 0.02 * std::exp(-t / 300.0) * std::cos(0.05 * t);
+  }
+  AnalysisResult d = analyze_series(damped, 1000.0);
+  ASSERT_FALSE(d.divergence.found_linear_region);
+  d.divergence.uncertainty_per_s = 0.5;  // whatever the estimator left there
+  d.divergence.slope_uncertainty_per_s = 0.25;
+  const auto j = nlohmann::json::parse(analysis_json(d, "rec.csv", "v", "m/s"));
+  const auto& div = j["lyapunov"]["divergence"];
+  EXPECT_TRUE(div["value"].is_null());
+  EXPECT_TRUE(div["uncertainty"].is_null()) << div.dump();
+  EXPECT_TRUE(div["slope_uncertainty"].is_null()) << div.dump();
+}
+
+// The evidence the verdict reads, irregular and not steady, the surrogate test run.
+RegimeEvidence irregular_evidence() {
+  RegimeEvidence e;
+  e.samples = 5000;
+  e.range = 2.0;
+  e.last_half_std = 1.0;
+  e.zero_one_run = true;
+  e.zero_one_K = 0.9;
+  e.zero_one_q25 = 0.85;
+  e.zero_one_q75 = 0.95;
+  e.prediction_computed = true;
+  e.prediction_nonlinear = e.prediction_linear = 1.0;
+  e.surrogate_run = true;
+  e.surrogate_count = 39;
+  return e;
+}
+
+std::string evidence_text(const Verdict& v) {
+  std::string all;
+  for (const auto& line : v.evidence) all += line + "\n";
+  return all;
+}
+
+// Issue 33: the determinism line said "below all N IAAFT surrogates" whatever the rank.
+TEST(Regime, SurrogateEvidenceSaysWhereTheRecordRanks) {
+  RegimeEvidence e = irregular_evidence();
+  e.surrogate_rank = 39;  // every surrogate below the record: less predictable than all
+  e.surrogate_rejected = true;
+  const std::string above = evidence_text(decide_regime(e));
+  EXPECT_NE(above.find("prediction error is above all 39 IAAFT surrogates (needs below all"),
+            std::string::npos) << above;
+  EXPECT_EQ(above.find("is below all"), std::string::npos) << above;
+  e.surrogate_rank = 12;
+  e.surrogate_rejected = false;
+  EXPECT_NE(evidence_text(decide_regime(e)).find("is above 12 of 39 IAAFT surrogates"),
+            std::string::npos);
+  e.surrogate_rank = 0;
+  e.surrogate_rejected = e.surrogate_more_predictable = true;
+  EXPECT_NE(evidence_text(decide_regime(e)).find("is below all 39 IAAFT surrogates"),
+            std::string::npos);
+}
+
+// Issue 33: "stochastic" on a noise-free simulated run read as a claim about its source.
+TEST(Regime, StochasticSaysWhatItMeans) {
+  RegimeEvidence e = irregular_evidence();
+  e.surrogate_rank = 20;
+  const Verdict v = decide_regime(e);
+  ASSERT_EQ(v.regime, Regime::kStochastic);
+  EXPECT_NE(evidence_text(v).find("it does not say the source is random"), std::string::npos);
 }
 
 }  // namespace

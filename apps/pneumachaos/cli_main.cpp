@@ -12,6 +12,7 @@
 
 #include "cli_main.hpp"
 #include "flag_names.hpp"
+#include "unknown_words.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
@@ -38,6 +39,7 @@ int run(int argc, char** argv, std::span<const pneumachaos::cli::AddCommand> com
     actions[app.get_subcommands({}).back()] = std::move(action);
   }
   if (elsewhere != nullptr && !names_a_command(app, argc, argv)) return elsewhere(argc, argv);
+  pneumachaos::cli::refuse_unknown_words(app, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "flag_names.hpp"
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
@@ -31,7 +32,7 @@ Action add_analyze(CLI::App& app) {
   struct Args {
     std::string file;
     std::string column = "v";
-    std::optional<double> rate_Hz;
+    std::optional<double> rate_Hz, from_s, to_s;
     std::string json;
     std::string series_out;
     bool no_wolf = false;
@@ -47,15 +48,23 @@ Action add_analyze(CLI::App& app) {
                   "record: CSV with a header, or blank-separated columns with or without one; "
                   "- reads standard input")
       ->required()
-      ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
+      ->check(input_record_check());
   cmd->add_option("--column", args->column,
                   "column to analyse: header name (default v), or its number in a file "
-                  "without a header (default 1)");
-  cmd->add_option("--rate", args->rate_Hz, "sample rate [Hz] when the file has no time column");
-  cmd->add_option("--json", args->json, "write every number with its unit as JSON to this file");
+                  "without a header (default 1, unless that column looks like a clock)");
+  cmd->add_option("--rate", args->rate_Hz,
+                  "sample rate [Hz] of a file without a time column (with one, the two must "
+                  "agree)");
+  cmd->add_option("--from", args->from_s,
+                  "analyse from this time [s] on the record's clock (e.g. 2 to skip a start-up "
+                  "transient, as `reproduce` does; default: the first sample)");
+  cmd->add_option("--to", args->to_s, "analyse up to this time [s] (default: the last sample)");
+  cmd->add_option("--json", args->json, "write every number with its unit as JSON to this file")
+      ->check(output_file_check());
   cmd->add_option("--series-out", args->series_out,
                   "directory for the curves as CSV (spectrum, autocorrelation, divergence, "
-                  "Wolf running estimate, embedded trajectory, Poincare points, maxima map)");
+                  "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
+      ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
   cmd->add_option("--surrogates", args->surrogates,
                   "IAAFT surrogates for the test against linear noise (default 39: a two-sided "
@@ -82,7 +91,9 @@ Action add_analyze(CLI::App& app) {
     CsvSeriesOptions input;
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
-    const TimeSeries series = read_csv_series(args->file, input);
+    const TimeSeries series = with_flag_names(
+        FlagNames{{"from", "--from"}, {"to", "--to"}},
+        [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
     const Channel& channel = series.channels().front();
     const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit));

@@ -37,24 +37,27 @@ void add_fit_options(CLI::App* cmd, FitArgs& a) {
                   "a scenario key to fit (repeatable), e.g. --free circuit.S1_mm2 "
                   "--free cylinder.dead_volume_head_cm3; default: circuit.S1_mm2, "
                   "circuit.S2_mm2, friction.Fc_N, friction.Fs_N");
-  cmd->add_option("--json", a.json, "write the fitted values, standard errors and fit statistics as JSON");
-  cmd->add_option("--scenario-out", a.scenario_out, "write the fitted scenario as TOML");
+  cmd->add_option("--json", a.json, "write the fitted values, standard errors and fit statistics as JSON")
+      ->check(output_file_check());
+  cmd->add_option("--scenario-out", a.scenario_out, "write the fitted scenario as TOML")
+      ->check(output_file_check());
   cmd->add_option("--plot-out", a.plot_out,
                   "directory for the validation series (measured vs simulated CSV), its gnuplot "
-                  "scripts and figure");
+                  "scripts and figure")
+      ->check(output_directory_check());
   add_record_column_options(cmd, a.columns);
   cmd->add_option("--segment", a.segment_s, "segment length [s] of the final fit (default 0.2)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number_check());
   cmd->add_option("--pressure-scale", a.pressure_scale_Pa,
                   "noise scale dividing the pressure residuals [Pa] (default 1000)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number_check());
   cmd->add_option("--velocity-scale", a.velocity_scale_mm_s,
                   "noise scale dividing the velocity residuals [mm/s] (default 30)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number_check());
   cmd->add_option("--max-iterations", a.max_iterations,
                   "Ceres iterations allowed per fit (default 50); a fit that needs more has "
                   "not converged (exit 3)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number_check());
   cmd->add_flag("--verbose", a.verbose, "print Ceres's iterations to standard error");
 }
 

@@ -38,14 +38,17 @@ Action add_friction(CLI::App& app) {
                   "record: CSV with a header naming columns and units, e.g. t[s],v[m/s],"
                   "P1[Pa],P2[Pa] (also mm/s, kPa, MPa, bar, [MPa gauge]); - reads standard input")
       ->required()
-      ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
+      ->check(input_record_check());
   add_scenario_options(cmd, args->scenario);
-  cmd->add_option("--json", args->json, "write every result with its unit as JSON to this file");
+  cmd->add_option("--json", args->json, "write every result with its unit as JSON to this file")
+      ->check(output_file_check());
   cmd->add_option("--series-out", args->series_out,
                   "directory for F(t), F(v), the binned curve, each model's curve and the loop "
-                  "marks as CSV");
+                  "marks as CSV")
+      ->check(output_directory_check());
   cmd->add_option("--scenario-out", args->scenario_out,
-                  "write the preferred model as a scenario [friction] table (TOML)");
+                  "write the preferred model as a scenario [friction] table (TOML)")
+      ->check(output_file_check());
   cmd->add_option("--model", args->models,
                   "model to fit (repeatable): classic | stribeck | stribeck_delta | lugre "
                   "(default: all)");
@@ -55,8 +58,9 @@ Action add_friction(CLI::App& app) {
                   "Savitzky-Golay window in samples (odd, >= 3; default: chosen from the noise)");
   cmd->add_option("--max-iterations", args->max_iterations,
                   "iterations allowed to each fit (default 200); a fit that has not converged "
-                  "by then fails the command (exit 3)")
-      ->check(CLI::PositiveNumber);
+                  "by then is reported, marked and not used (a warning); the command fails "
+                  "(exit 3) only when no model converged")
+      ->check(positive_number_check());
   add_record_column_options(cmd, args->columns);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
@@ -74,12 +78,14 @@ Action add_friction(CLI::App& app) {
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
     const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
     fmt::print("{}", identify::friction_summary(estimate, fits));
-    identify::require_converged(fits);  // else its reason, exit 3, and nothing written
+    for (const auto& w : fits.warnings) fmt::print(stderr, "friction: warning: {}\n", w);
+    identify::require_converged(fits);  // none converged: its reason, exit 3, nothing written
     const identify::ModelFit* preferred = nullptr;
     for (const auto& f : fits.fits)
       if (f.name == fits.preferred_model) preferred = &f;
     if (!args->scenario_out.empty() && !preferred)
-      throw RunError("--scenario-out", "no model could be fitted (see above); no output written");
+      throw RunError("--scenario-out",
+                     "no model converged with Fc <= Fs (see above); no output written");
     OutputSet outputs;
     if (!args->json.empty())
       outputs.add(args->json) << identify::friction_json(estimate, fits, settings, record.source) << '\n';

@@ -31,7 +31,9 @@ Action add_lyapunov(CLI::App& app) {
       "et al. 1980), correct across stick/slip events, with its convergence");
   add_scenario_options(cmd, args->scenario);
   cmd->add_option("--transient", args->o.transient_s, "seconds discarded first (default 5)");
-  cmd->add_option("--measure", args->o.measure_s, "seconds averaged (default 40)");
+  cmd->add_option("--measure", args->o.measure_s,
+                  "seconds averaged (default 40, or up to the stroke end when the volumes "
+                  "follow the piston and it comes first)");
   cmd->add_option("--renormalize", args->o.renormalize_s,
                   "renormalisation interval [s] (default 0.02)");
   cmd->add_option("--separation", args->o.separation,
@@ -42,10 +44,11 @@ Action add_lyapunov(CLI::App& app) {
   cmd->add_option(
       "--tolerance-factor", args->tolerance_factor,
       "multiply the integration tolerances (rtol 1e-9, atol 1e-12; e.g. 0.5 to confirm)");
-  cmd->add_flag("--until-stroke-end", args->o.until_terminal_event,
+  cmd->add_flag("--until-stroke-end,!--no-until-stroke-end", args->o.until_terminal_event,
                 "a stroke end during the measurement ends it there (the exponent spans the "
-                "time measured) instead of failing the run");
-  cmd->add_option("--running-out", args->running_out, "CSV file for the running estimate");
+                "time measured; the default); --no-until-stroke-end fails the run instead");
+  cmd->add_option("--running-out", args->running_out, "CSV file for the running estimate")
+      ->check(output_file_check());
   cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);

@@ -13,7 +13,8 @@ Action add_reproduce(CLI::App& app) {
       "reproduce",
       "Reproduce the paper's Figs. 2-7 and claims from the built-in virtual rig: an HTML report "
       "with every figure's data and gnuplot script (resumes its sweeps when run again)");
-  cmd->add_option("--out", o->out_dir, "report directory (default: report)");
+  cmd->add_option("--out", o->out_dir, "report directory (default: report)")
+      ->check(output_directory_check());
   cmd->add_flag("--quick", o->quick,
                 "coarse grid and short records: the whole report in under a minute");
   cmd->add_option("--threads", o->threads, "worker threads for the sweeps (default: all cores)");

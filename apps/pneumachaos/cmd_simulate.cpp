@@ -33,7 +33,8 @@ Action add_simulate(CLI::App& app) {
   add_scenario_options(cmd, args->scenario);
   cmd->add_option("--duration", args->duration_s, "simulated time [s] (run.duration_s)");
   cmd->add_option("--rate", args->rate_Hz, "output sample rate [Hz] (run.rate_Hz)");
-  cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)");
+  cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)")
+      ->check(output_file_check());
   return [args]() {
     SettingOrigins origins;
     Scenario scenario = args->scenario.file.empty()
@@ -50,6 +51,7 @@ Action add_simulate(CLI::App& app) {
     flag("run.duration_s", args->duration_s, "--duration");
     flag("run.rate_Hz", args->rate_Hz, "--rate");
     validate_scenario(scenario, origins);
+    for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "simulate: note: {}\n", n);
     const Plant plant(scenario);
     const SimulationResult result = simulate(plant, scenario.run);
     fmt::print(stderr, "simulate: {}\n", describe(result.summary));

@@ -34,9 +34,11 @@ Action add_stability(CLI::App& app) {
   cmd->add_flag("--map", args->map, "evaluate over a grid (default: the paper's S1 x S2 grid)");
   cmd->add_option("--grid", args->grids,
                   "grid axis KEY=FROM:TO:STEP in the key's unit (with --map; repeatable)");
-  cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)");
+  cmd->add_option("-o,--output", args->output, "with --map: CSV file (default: standard output)")
+      ->check(output_file_check());
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
+    for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "stability: note: {}\n", n);
     StabilityOptions options;
     if (args->position_mm) {
       const double stroke_mm = scenario.cylinder.stroke_m * 1e3;

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <charconv>
+#include <csignal>
 #include <iostream>
 #include <optional>
 
@@ -53,6 +56,46 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   return kExitOk;
 }
 
+// Ctrl-C (or a TERM) during a sweep: the journal keeps every finished run, so the message says
+// how to continue, then the signal ends the process as it would have (issue 33). Only
+// write(2) in the handler; an ignored SIGINT (a background job of a script) stays ignored.
+class ResumeHintOnSignal {
+ public:
+  explicit ResumeHintOnSignal(const std::string& out) {
+    message() = fmt::format(
+        "\nsweep: interrupted; the finished runs are kept in {}: run the same command with "
+        "--resume to finish the sweep\n",
+        out);
+    for (int sig : {SIGINT, SIGTERM}) {
+      struct sigaction now {}, before {};
+      sigaction(sig, nullptr, &before);
+      if (before.sa_handler == SIG_IGN) continue;
+      now.sa_handler = &ResumeHintOnSignal::handle;
+      sigemptyset(&now.sa_mask);
+      now.sa_flags = SA_RESETHAND;  // the second signal, or the re-raise, acts as the default
+      sigaction(sig, &now, nullptr);
+      restore_.push_back({sig, before});
+    }
+  }
+  ~ResumeHintOnSignal() {
+    for (const auto& [sig, action] : restore_) sigaction(sig, &action, nullptr);
+  }
+  ResumeHintOnSignal(const ResumeHintOnSignal&) = delete;
+  ResumeHintOnSignal& operator=(const ResumeHintOnSignal&) = delete;
+
+ private:
+  static std::string& message() {
+    static std::string m;
+    return m;
+  }
+  static void handle(int sig) {
+    const std::string& m = message();
+    [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, m.data(), m.size());
+    ::raise(sig);  // SA_RESETHAND: the default action now ends the process
+  }
+  std::vector<std::pair<int, struct sigaction>> restore_;
+};
+
 struct SweepArgs {
   ScenarioArgs scenario;
   std::vector<std::string> grids;
@@ -95,7 +138,8 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
   cmd->add_option("--seed", a.seed, "seed of the run-to-run variation (default 1)");
   cmd->add_option("--threads", a.threads, "worker threads (default 0: all cores)")
       ->check(CLI::Range(0, 4096));
-  cmd->add_option("--out", a.out, "directory for the journal and the results");
+  cmd->add_option("--out", a.out, "directory for the journal and the results")
+      ->check(output_directory_check());
   cmd->add_flag("--resume", a.resume, "finish an interrupted sweep in --out");
   cmd->add_flag("--wolf", a.wolf, "also run Wolf's estimator on every record (slower)");
   cmd->add_option("--surrogates", a.surrogates,
@@ -117,7 +161,8 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
                   "and analysis options such as --surrogates) and write its record; its "
                   "runs.csv line goes to standard error");
   cmd->add_option("-o,--record", a.record,
-                  "with --replay: CSV file for the record (default: standard output)");
+                  "with --replay: CSV file for the record (default: standard output)")
+      ->check(output_file_check());
 }
 
 // The command line wins over the scenario file's [sweep] table, which wins over defaults.
@@ -168,10 +213,13 @@ Action add_sweep(CLI::App& app) {
     const SweepSpec spec = sweep_spec_from(*args);
     if (!args->replay.empty()) return replay(spec, args->replay, args->record);
     if (!args->record.empty()) throw Error("--record", "needs --replay");
+    for (const auto& w : spec.warnings()) fmt::print(stderr, "sweep: warning: {}\n", w);
     SweepOptions options;
     options.out_dir = args->out;
     options.resume = args->resume;
     options.threads = args->threads;
+    std::optional<ResumeHintOnSignal> hint;
+    if (!args->out.empty()) hint.emplace(args->out);
     const SweepSummary s = run_sweep(spec, options);
     if (!s.wrote_files) return kExitOk;  // another MPI rank reports
     print_sweep_summary(spec, s, args->out);

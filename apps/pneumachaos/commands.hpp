@@ -24,6 +24,16 @@ struct ScenarioArgs {
 };
 void add_scenario_options(CLI::App* cmd, ScenarioArgs& args);
 
+/// A number > 0 (CLI::PositiveNumber prints its range as 0 to 1.8e308 in full).
+CLI::Validator positive_number_check();
+/// A record to read: an existing file, or "-" for standard input.
+CLI::Validator input_record_check();
+
+/// Checks of output paths at parse time, before any work (one policy: output_file_problem,
+/// output_directory_problem): a bad path is a usage error (exit 2) naming the option.
+CLI::Validator output_file_check();
+CLI::Validator output_directory_check();
+
 /// --column-t/-v/-P1/-P2/-x/-a: the header names of a measured record's columns.
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns);
 

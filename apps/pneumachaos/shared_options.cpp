@@ -1,10 +1,13 @@
 #include "commands.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
 
 namespace pneumachaos::cli {
 
@@ -12,6 +15,52 @@ void add_scenario_options(CLI::App* cmd, ScenarioArgs& args) {
   cmd->add_option("scenario", args.file, "scenario TOML file (default: built-in scenario)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--set", args.sets, "override a scenario key, e.g. --set circuit.S2_mm2=0.05");
+}
+
+CLI::Validator positive_number_check() {
+  return CLI::Validator(
+      [](std::string& text) {
+        double v = 0.0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || end != text.data() + text.size() || !(v > 0.0) ||
+            !std::isfinite(v))
+          return fmt::format("must be a positive number, got {}", text);
+        return std::string();
+      },
+      "POSITIVE");
+}
+
+CLI::Validator input_record_check() {
+  return CLI::Validator(
+      [](std::string& path) {
+        if (path == "-") return std::string();
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(path, ec) || std::filesystem::is_fifo(path, ec))
+          return std::string();
+        return fmt::format("{}: {}; give a record's path, or - for standard input", path,
+                           std::filesystem::exists(path, ec) ? "not a file" : "no such file");
+      },
+      "FILE|-");
+}
+
+namespace {
+
+// A CLI11 check from one of the library's output-path rules ("" = fine, else the problem).
+CLI::Validator path_check(std::string (*problem_of)(const std::string&), const char* name) {
+  return CLI::Validator(
+      [problem_of](std::string& path) {
+        const std::string problem = problem_of(path);
+        return problem.empty() ? std::string() : path + " " + problem;
+      },
+      name);
+}
+
+}  // namespace
+
+CLI::Validator output_file_check() { return path_check(&output_file_problem, "OUTPUT FILE"); }
+
+CLI::Validator output_directory_check() {
+  return path_check(&output_directory_problem, "OUTPUT DIR");
 }
 
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) {

@@ -35,7 +35,9 @@ class Scenario:
         return cls(_core.Scenario.from_toml(str(path)))
 
     def set(self, key, value):
-        """Sets one key in its unit (e.g. set("circuit.S2_mm2", 0.05)); returns self."""
+        """Sets one key in its unit (e.g. set("circuit.S2_mm2", 0.05)) IN PLACE: this scenario
+        changes, and the same object is returned for chaining, so after `s2 = s.set(...)` s2
+        IS s. For a changed copy that leaves this scenario alone, use with_value(key, value)."""
         if isinstance(value, str):
             self._core.set_word(key, value)
         elif isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
@@ -43,6 +45,11 @@ class Scenario:
         else:
             self._core.set_number(key, float(value))
         return self
+
+    def with_value(self, key, value):
+        """A copy of this scenario with one key set in its unit; this scenario is unchanged:
+        `fast = s.with_value("circuit.S2_mm2", 1.0)`."""
+        return self.copy().set(key, value)
 
     def get(self, key):
         """The key's value as text in its unit."""

@@ -189,3 +189,14 @@ def test_adaptive_sweep_marks_inferred_points(tmp_path):
     assert all(r["runs"] == "0" for r in rows if r["inferred"] == "1")
     with pytest.raises(ValueError, match="adaptive: refines a map over exactly two grid axes"):
         pc.sweep(s, grid=grid[:1], out=str(tmp_path / "b"), adaptive=True)
+
+
+def test_set_changes_in_place_and_with_value_copies():
+    """Issue 33: `s2 = s.set(...)` changed s too, unannounced. set is in place and says so;
+    with_value returns a changed copy and leaves the original alone."""
+    s = pc.Scenario.default()
+    assert "IN PLACE" in pc.Scenario.set.__doc__
+    s2 = s.with_value("circuit.S2_mm2", 1.0)
+    assert s.get("circuit.S2_mm2") == "0.35"
+    assert s2.get("circuit.S2_mm2") == "1"
+    assert s.set("circuit.S2_mm2", 0.5) is s

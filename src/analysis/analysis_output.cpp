@@ -106,9 +106,20 @@ std::string evidence_summary(const AnalysisResult& r) {
 
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                              const std::string& unit) {
-  std::string out =
-      fmt::format("{} samples of {} [{}] at {} Hz ({:.4g} s); mean {:.4g}, std {:.4g}\n", r.samples,
-                  name, unit, r.rate_Hz, r.samples / r.rate_Hz, r.mean, r.standard_deviation);
+  // The answer first (issue 33): the verdict and the exponent, then how they were reached.
+  std::string out = fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n",
+                                regime_name(r.verdict.regime), r.verdict.chaotic ? "yes" : "no",
+                                r.verdict.stick_slip ? "yes" : "no");
+  if (r.divergence.found_linear_region) {
+    out += fmt::format("maximum Lyapunov exponent: {:.4g} +- {:.2g} 1/s (divergence curve)\n",
+                       r.divergence.lambda_per_s, r.divergence.uncertainty_per_s);
+  } else {
+    out += fmt::format("maximum Lyapunov exponent: none ({})\n",
+                       r.divergence_status.empty() ? "not computed" : r.divergence_status);
+  }
+  out += fmt::format("{} samples of {} [{}] at {} Hz ({:.4g} s); mean {:.4g}, std {:.4g}\n",
+                     r.samples, name, unit, r.rate_Hz, r.samples / r.rate_Hz, r.mean,
+                     r.standard_deviation);
   if (r.standard_deviation > 0.0) {
     out += fmt::format(
         "spectrum: peak {:.4g} Hz ({:.1f} % of power), broadband share {:.3f}, flatness {:.3f}\n",
@@ -151,8 +162,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                        r.poincare.points.size(), r.maxima_map.size());
     out += evidence_summary(r);
   }
-  out += fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n", regime_name(r.verdict.regime),
-                     r.verdict.chaotic ? "yes" : "no", r.verdict.stick_slip ? "yes" : "no");
+  out += fmt::format("evidence for the verdict ({}):\n", regime_name(r.verdict.regime));
   for (const auto& line : r.verdict.evidence) out += "  " + line + "\n";
   return out;
 }
@@ -188,8 +198,12 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                     {"maxima_spacing", quantity(r.maxima_spacing_samples / r.rate_Hz, "s")}};
   j["lyapunov"]["divergence"] = {
       {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
-      {"uncertainty", number(r.divergence.uncertainty_per_s)},
-      {"slope_uncertainty", number(r.divergence.slope_uncertainty_per_s)},
+      // Without a linear region there is no exponent, so no uncertainty of it either (the
+      // spread of placeholder zeros is no measurement).
+      {"uncertainty",
+       r.divergence.found_linear_region ? number(r.divergence.uncertainty_per_s) : nullptr},
+      {"slope_uncertainty",
+       r.divergence.found_linear_region ? number(r.divergence.slope_uncertainty_per_s) : nullptr},
       {"unit", "1/s"},
       {"value_bits",
        r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},

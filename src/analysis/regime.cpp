@@ -87,6 +87,14 @@ void note_zero_one(const RegimeEvidence& e, const VerdictOptions& o, Notes& note
   c.clearly_regular = e.zero_one_q75 < o.zero_one_split;
 }
 
+// Where the record's prediction error lies among the surrogates' (rank = how many are
+// smaller), as the evidence line states it: it must say "above" when it is above.
+std::string surrogate_position(std::size_t rank, std::size_t count) {
+  if (rank == 0) return fmt::format("below all {} IAAFT surrogates", count);
+  if (rank >= count) return fmt::format("above all {} IAAFT surrogates", count);
+  return fmt::format("above {} of {} IAAFT surrogates", rank, count);
+}
+
 // Determinism: with the surrogate test run, "more predictable than every IAAFT surrogate"
 // (a calibrated test against linear noise); without it, the prediction-error ratio alone.
 void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
@@ -115,10 +123,11 @@ void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& n
       !e.prediction_computed || ratio < o.surrogate_max_prediction_ratio;
   c.deterministic = note(
       e.surrogate_more_predictable && nonlinear_wins,
-      fmt::format("deterministic: the record's prediction error is below all {} IAAFT surrogates "
-                  "(rank {}, p = {:.3f}; linear-stochastic null {}), and the local-constant "
+      fmt::format("deterministic: the record's prediction error is {} (needs below all; rank "
+                  "{}, p = {:.3f}; linear-stochastic null {}), and the local-constant "
                   "predictor {} the linear one (ratio {:.3g}; needs below {})",
-                  e.surrogate_count, e.surrogate_rank, e.surrogate_p,
+                  surrogate_position(e.surrogate_rank, e.surrogate_count), e.surrogate_rank,
+                  e.surrogate_p,
                   e.surrogate_rejected ? "rejected" : "kept",
                   nonlinear_wins ? "beats" : "does not beat", ratio,
                   o.surrogate_max_prediction_ratio));
@@ -226,6 +235,13 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   }
   v.regime = combine(c, v, e.zero_one_run);
   v.chaotic = v.regime == Regime::kChaotic;
+  // "stochastic" is what the tests could establish, not where the record came from: a
+  // noise-free simulation can earn it (issue 33), so the verdict says what it means.
+  if (v.regime == Regime::kStochastic) {
+    note.info("stochastic means: irregular, and not distinguishable from linearly filtered "
+              "noise by these tests; it does not say the source is random (a noise-free "
+              "simulation can be judged so)");
+  }
   note.info("rule: " + verdict_rule(o));
   return v;
 }

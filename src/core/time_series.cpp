@@ -60,4 +60,42 @@ const Channel& TimeSeries::channel(const std::string& name) const {
   throw Error("channel " + name, "no such channel; the series has: " + known);
 }
 
+TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
+                       std::optional<double> to_s) {
+  const std::size_t n = series.size();
+  const double first = series.start_s();
+  const double last = n == 0 ? first : series.time_s(n - 1);
+  const auto check = [&](std::optional<double> t, const char* name) {
+    if (!t) return;
+    if (!std::isfinite(*t) || *t < first || *t > last)
+      throw Error(name, fmt::format("{} s lies outside the record, which spans {:.6g} to {:.6g} s",
+                                    *t, first, last));
+  };
+  check(from_s, "from");
+  check(to_s, "to");
+  // A bound typed as a sample's time selects that sample, whatever its rounding.
+  constexpr double kSlack = 1e-6;  // of a sample
+  const double rate = series.rate_Hz();
+  const std::size_t begin =
+      from_s ? static_cast<std::size_t>(std::max(0.0, std::ceil((*from_s - first) * rate - kSlack)))
+             : 0;
+  const std::size_t end =
+      to_s ? std::min(n, static_cast<std::size_t>(std::floor((*to_s - first) * rate + kSlack)) + 1)
+           : n;
+  if (end < begin + 2) {
+    throw Error(to_s ? "to" : "from",
+                fmt::format("the window {:.6g} to {:.6g} s holds {} sample(s); at least 2 are "
+                            "needed",
+                            from_s.value_or(first), to_s.value_or(last),
+                            end > begin ? end - begin : 0));
+  }
+  TimeSeries out(series.rate_Hz(), series.time_s(begin));
+  for (const Channel& c : series.channels()) {
+    out.add_channel(c.name, c.unit,
+                    std::vector<double>(c.values.begin() + static_cast<std::ptrdiff_t>(begin),
+                                        c.values.begin() + static_cast<std::ptrdiff_t>(end)));
+  }
+  return out;
+}
+
 }  // namespace pneumachaos

@@ -579,6 +579,46 @@ const ModelFit* FrictionFits::failed() const {
   return nullptr;
 }
 
+bool FrictionFits::any_converged() const {
+  return std::any_of(fits.begin(), fits.end(),
+                     [](const ModelFit& f) { return f.fitted && f.converged; });
+}
+
+namespace {
+
+// Fc above Fs: a fit no scenario accepts (the seal's breakaway is at least its sliding level).
+bool unphysical_levels(const ModelFit& f) {
+  const FittedParameter* fc = f.param("Fc_N");
+  const FittedParameter* fs = f.param("Fs_N");
+  return fc != nullptr && fs != nullptr && fc->value > fs->value;
+}
+
+// The warnings of fit_friction: a model that did not converge is kept, marked and never
+// preferred; a kinetic level above the static one is no breakaway peak and is said so.
+std::vector<std::string> fit_warnings(const std::vector<ModelFit>& fits) {
+  std::vector<std::string> w;
+  for (const auto& f : fits) {
+    if (!f.fitted) continue;
+    if (!f.converged) {
+      w.push_back(fmt::format("the {} fit did not converge ({}): its parameters are shown, "
+                              "marked, and not used; the other models stand",
+                              f.name, f.summary));
+      continue;
+    }
+    if (unphysical_levels(f)) {
+      const FittedParameter* fc = f.param("Fc_N");
+      const FittedParameter* fs = f.param("Fs_N");
+      w.push_back(fmt::format("the {} fit has Fc {:.3g} N above Fs {:.3g} N, which no seal has "
+                              "(breakaway is at least the sliding level): its levels are not "
+                              "identified by this record, and it is not preferred",
+                              f.name, fc->value, fs->value));
+    }
+  }
+  return w;
+}
+
+}  // namespace
+
 double steady_friction_N(const FrictionParams& p, double v, double gauge_sum_Pa) {
   FrictionParams q = p;
   if (q.kind == FrictionKind::kLuGre) q.kind = FrictionKind::kStribeck;
@@ -616,10 +656,11 @@ FrictionFits fit_friction(const FrictionEstimate& e, const FrictionFitOptions& o
   }
   double best = std::numeric_limits<double>::infinity();
   for (const auto& f : out.fits)
-    if (f.fitted && f.converged && f.bic < best) {
+    if (f.fitted && f.converged && !unphysical_levels(f) && f.bic < best) {
       best = f.bic;
       out.preferred_model = f.name;
     }
+  out.warnings = fit_warnings(out.fits);
   return out;
 }
 
@@ -639,9 +680,11 @@ FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<s
 }
 
 void require_converged(const FrictionFits& fits) {
-  if (const ModelFit* failed = fits.failed())
+  const ModelFit* failed = fits.failed();
+  if (failed != nullptr && !fits.any_converged())
     throw RunError("friction fit " + failed->name,
-                   "did not converge (" + failed->summary + "); no output written");
+                   "did not converge (" + failed->summary +
+                       "), nor did any other model; no output written");
 }
 
 }  // namespace pneumachaos::identify

@@ -170,6 +170,7 @@ std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
   j["rms_N"] = rms;
   j["preferred_model"] = fits.preferred_model.empty() ? json(nullptr) : json(fits.preferred_model);
   j["criterion"] = fits.criterion;
+  j["warnings"] = fits.warnings;
   return j.dump(2);
 }
 

@@ -144,9 +144,9 @@ void locate_columns(ColumnSet& c, const RecordColumns& names, const std::string&
   if (c.p1.index < 0) missing.push_back(fmt::format("\"{}\" (pressure 1; --column-P1)", names.P1));
   if (c.p2.index < 0) missing.push_back(fmt::format("\"{}\" (pressure 2; --column-P2)", names.P2));
   if (!missing.empty())
-    throw Error(where, fmt::format("missing column{} {}; the header has: {}",
+    throw Error(where, fmt::format("missing column{} {}; the header has: {}{}",
                                    missing.size() > 1 ? "s" : "", fmt::join(missing, ", "),
-                                   fmt::join(h, ", ")));
+                                   fmt::join(h, ", "), separator_hint(h)));
   for (ColumnSpec* col : c.used()) {
     const std::string& name = h[static_cast<std::size_t>(col->index)];
     col->unit = parse_unit(header_unit(name), col->quantity,
@@ -252,7 +252,8 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
   const std::size_t header_line = lines.number();
   if (line.find(',') == std::string::npos)
     throw Error(fmt::format("{}:{}", origin, header_line),
-                "expected a comma-separated header such as t[s],v[m/s],P1[Pa],P2[Pa]");
+                "expected a comma-separated header such as t[s],v[m/s],P1[Pa],P2[Pa]" +
+                    separator_hint({line}));
   ColumnSet c;
   for (const auto& f : split_csv_fields(line)) c.header.push_back(trim_field(f));
   locate_columns(c, names, origin, header_line);

@@ -117,8 +117,8 @@ Layout read_layout(CsvLines& lines, std::string& first, const std::string& origi
   if (l.value < 0) {
     std::string known;
     for (const auto& h : l.names) known += (known.empty() ? "" : ", ") + h;
-    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}", options.column,
-                                   known));
+    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}{}", options.column,
+                                   known, separator_hint(l.names)));
   }
   if (!options.rate_Hz && l.time < 0) {
     throw Error(where, l.has_header ? "no time column (t, time, t[s]) in the header: give the "
@@ -191,6 +191,26 @@ double rate_from_times(const std::vector<double>& times, const std::string& orig
   return static_cast<double>(times.size() - 1) / (times.back() - times.front());
 }
 
+bool same_rate(double a, double b, double jitter) { return std::abs(a - b) <= jitter * b; }
+
+// A file without a header whose analysed column is the default first one, and that first
+// column rises at a constant step like a time column, is refused: analysing the clock calls
+// its ramp "periodic" (issue 33). Naming the column (--column N) settles it either way.
+void refuse_time_like_first_column(const std::vector<double>& first, const Layout& l,
+                                   const std::string& origin, const CsvSeriesOptions& options) {
+  if (options.column != "v" || l.names.size() < 2 || first.size() < 3) return;
+  const double step = (first.back() - first.front()) / static_cast<double>(first.size() - 1);
+  if (!(step > 0.0)) return;
+  for (std::size_t i = 1; i < first.size(); ++i) {
+    if (std::abs(first[i] - first[i - 1] - step) > options.time_jitter * step) return;
+  }
+  throw Error(fmt::format("{}:{}", origin, l.header_line),
+              fmt::format("the file has no header and its first column rises at a constant step "
+                          "of {:g}, like a time column: name the column to analyse, e.g. "
+                          "--column 2 (or --column 1 to analyse the first column anyway)",
+                          step));
+}
+
 // The file's bytes in one string of its size, read at once: a string stream grows by
 // doubling and is copied out, and the fresh pages of every copy cost as much as parsing
 // (docs/performance.md "Analysis (fourth round)"). Anything but a regular file (a pipe; a
@@ -248,9 +268,17 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
   if (c.values.size() < 2) {
     throw Error(origin, fmt::format("{} sample(s): at least 2 are needed", c.values.size()));
   }
-  const bool timed = !options.rate_Hz;
-  TimeSeries series(timed ? rate_from_times(c.times, origin, options.time_jitter) : *options.rate_Hz,
-                    timed ? c.times.front() : 0.0);
+  if (!layout.has_header) refuse_time_like_first_column(c.values, layout, origin, options);
+  const bool timed = layout.time >= 0;
+  const double rate_Hz = timed ? rate_from_times(c.times, origin, options.time_jitter) : *options.rate_Hz;
+  if (timed && options.rate_Hz && !same_rate(rate_Hz, *options.rate_Hz, options.time_jitter)) {
+    const auto t = static_cast<std::size_t>(layout.time);
+    throw Error("sampling rate",
+                fmt::format("{} Hz disagrees with the time column \"{}\" of {}, sampled at {:.6g} "
+                            "Hz: drop the rate option to use the time column, or correct one of them",
+                            *options.rate_Hz, layout.names[t], origin, rate_Hz));
+  }
+  TimeSeries series(rate_Hz, timed ? c.times.front() : 0.0);
   const std::string& header = layout.names[static_cast<std::size_t>(layout.value)];
   series.add_channel(layout.has_header ? header_name(header) : header,
                      layout.has_header ? header_unit(header) : "", std::move(c.values));

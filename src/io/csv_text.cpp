@@ -41,6 +41,16 @@ int find_column(const std::vector<std::string>& names, const std::vector<std::st
   return -1;
 }
 
+std::string separator_hint(const std::vector<std::string>& names) {
+  const bool semicolons = std::any_of(names.begin(), names.end(), [](const std::string& n) {
+    return n.find(';') != std::string::npos;
+  });
+  if (!semicolons) return "";
+  return "; the fields look separated by ';' (a spreadsheet export with decimal commas?): "
+         "columns must be separated by commas or blanks, with decimal points; convert it, e.g. "
+         "with `tr ',;' '.,' < in.csv > out.csv`";
+}
+
 double parse_cell(const std::string& f, const std::string& where) {
   double v = 0.0;
   const char* end = f.data() + f.size();

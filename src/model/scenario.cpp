@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -180,6 +183,27 @@ Scenario default_scenario() {
   s.cylinder.stroke_m = 0.500;
   s.cylinder.frozen_position_m = -1e-3;
   return s;
+}
+
+std::vector<std::string> scenario_notes(const Scenario& s) {
+  std::vector<std::string> notes;
+  const Scenario rig = default_scenario();
+  const LoadParams& m = s.load;
+  const bool rig_mount = m.coupling == LoadCoupling::kSpring &&
+                         m.coupling_stiffness_N_per_m == rig.load.coupling_stiffness_N_per_m &&
+                         m.coupling_damping_Ns_per_m == rig.load.coupling_damping_Ns_per_m;
+  if (rig_mount && s.cylinder.bore_m != rig.cylinder.bore_m) {
+    // The mount's mode: the spring between the piston + rod and the load (reduced mass).
+    const double reduced_kg = m.piston_mass_kg * m.mass_kg / (m.piston_mass_kg + m.mass_kg);
+    const double mode_Hz =
+        std::sqrt(m.coupling_stiffness_N_per_m / reduced_kg) / (2.0 * std::numbers::pi);
+    notes.push_back(fmt::format(
+        "the load sits on the virtual rig's compliant mount (load.coupling = spring, {:g} N/m: a "
+        "mode near {:.3g} Hz) while the cylinder is not the rig's (bore {:g} mm); for a load "
+        "fixed to the rod set load.coupling = rigid (docs/scenario.md, \"Your own cylinder\")",
+        m.coupling_stiffness_N_per_m, mode_Hz, s.cylinder.bore_m * 1e3));
+  }
+  return notes;
 }
 
 Scenario simple_rig_scenario() { return Scenario{}; }

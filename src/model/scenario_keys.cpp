@@ -43,6 +43,7 @@ struct KeySpec {
   bool whole = false;  // a count: only whole numbers
   double scale = 1.0;  // user unit -> SI
   Range range;
+  std::string why;  // for a physical plausibility range: where its bounds come from
   std::function<void(Scenario&, double)> set_number;
   std::function<double(const Scenario&)> get_number;
   std::vector<std::string> words;
@@ -69,6 +70,17 @@ KeySpec number(std::string key, std::string unit, std::string description, doubl
       return v;
     }
   };
+  return s;
+}
+
+// A number key whose range is what a pneumatic drive can physically be, not only what the
+// equations accept: a value beyond it is almost always a unit slip (250 MPa for 0.25 MPa, a
+// bore in metres) and is refused with `why`, the source of the bounds (issue 33).
+template <typename Ref>
+KeySpec plausible(std::string key, std::string unit, std::string description, double scale,
+                  Range range, std::string why, Ref ref) {
+  KeySpec s = number(std::move(key), std::move(unit), std::move(description), scale, range, ref);
+  s.why = std::move(why);
   return s;
 }
 
@@ -161,41 +173,69 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
 }
 
+// A speed controller's effective area (ISO 6358 C converted to mm^2) is a few mm^2 for the
+// M5-1/4" fittings of small cylinders and some 100-200 mm^2 for 1" valves; 1000 mm^2 (a 36 mm
+// orifice) bounds any pneumatic valve.
+constexpr double kMaxValveArea_mm2 = 1000.0;
+const char* const kValveAreaWhy =
+    "the largest pneumatic valves (1\" ports) have effective areas of some 100-200 mm^2; is "
+    "the unit mm^2?";
+
 // Keys of the circuit: valve openings, supply and ambient pressure.
 void add_circuit_keys(std::vector<KeySpec>& k) {
   k.push_back(word<CircuitKind>(
       "circuit.kind",
       "meter-out: S2 is the exhaust speed controller (the paper's rig); "
-      "meter-in: S1 is the supply speed controller",
+      "meter-in: S1 is the supply speed controller. The circuit is the same either way (S1 "
+      "feeds the head side, S2 vents the rod side): the kind picks S1's and S2's defaults and "
+      "which one `stability` treats as the controller, so with both given the simulation is "
+      "the same",
       {"meter-out", "meter-in"}, [](auto& s) -> auto& { return s.circuit.kind; }));
   {
     KeySpec s1 = number(
         "circuit.S1_mm2", "mm^2",
         "effective sectional area of the supply-side valve (default 2.70 "
         "meter-out, 0.35 meter-in)",
-        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S1_m2; });
+        1e-6, Range{0.0, kMaxValveArea_mm2}, [](auto& s) -> auto& { return s.circuit.S1_m2; });
+    s1.why = kValveAreaWhy;
     s1.get_number = [](const Scenario& s) { return s.circuit.S1(); };
     k.push_back(std::move(s1));
     KeySpec s2 = number(
         "circuit.S2_mm2", "mm^2",
         "effective sectional area of the rod-side (exhaust) valve (default 0.35 "
         "meter-out, 20 meter-in)",
-        1e-6, kNonNegative, [](auto& s) -> auto& { return s.circuit.S2_m2; });
+        1e-6, Range{0.0, kMaxValveArea_mm2}, [](auto& s) -> auto& { return s.circuit.S2_m2; });
+    s2.why = kValveAreaWhy;
     s2.get_number = [](const Scenario& s) { return s.circuit.S2(); };
     k.push_back(std::move(s2));
   }
-  k.push_back(number(
-      "supply.pressure_MPa", "MPa (gauge)", "supply pressure Ps above ambient", 1e6, kPositive,
+  // Industrial compressed-air networks run at 0.4-1 MPa gauge (ISO 8573 air, ISO 4414 safety
+  // practice); cylinders (ISO 15552, ISO 6432) are rated to 1-1.6 MPa. 2 MPa leaves room for
+  // boosters and high-pressure valves; above it a pneumatic cylinder is out of its rating.
+  k.push_back(plausible(
+      "supply.pressure_MPa", "MPa (gauge)", "supply pressure Ps above ambient", 1e6,
+      Range{0.0, 2.0, true, false},
+      "pneumatic cylinders are rated to 1-1.6 MPa gauge (ISO 15552, ISO 6432) and industrial "
+      "supplies run at 0.4-1 MPa; is the unit MPa?",
       [](auto& s) -> auto& { return s.supply_gauge_Pa; }));
-  k.push_back(number(
-      "ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3, kPositive,
+  // The standard atmosphere spans 101 kPa at sea level to 31 kPa at 9 km; 120 kPa allows a
+  // deep mine or a pressurised room.
+  k.push_back(plausible(
+      "ambient.pressure_kPa", "kPa (absolute)", "atmospheric pressure Pa", 1e3,
+      Range{30.0, 120.0},
+      "the atmosphere is 101.3 kPa at sea level and 31 kPa at 9,000 m (ISO 2533); is the unit "
+      "kPa?",
       [](auto& s) -> auto& { return s.ambient_pressure_Pa; }));
 }
 
 // Keys of the air: gas properties, chamber thermodynamics and the supply line.
 void add_gas_keys(std::vector<KeySpec>& k) {
-  k.push_back(number(
-      "gas.temperature_K", "K", "temperature of supply air and chambers", 1.0, kPositive,
+  // Pneumatic components are rated for about -20..+80 degC (manufacturers' data; ISO 8573
+  // air); -73..+127 degC bounds any air a cylinder works with.
+  k.push_back(plausible(
+      "gas.temperature_K", "K", "temperature of supply air and chambers", 1.0,
+      Range{200.0, 400.0},
+      "pneumatic components work at about 253-353 K (-20..+80 degC); is the unit kelvin?",
       [](auto& s) -> auto& { return s.temperature_K; }));
   k.push_back(number(
       "gas.R_J_per_kgK", "J/(kg*K)", "specific gas constant", 1.0, kPositive,
@@ -234,8 +274,11 @@ void add_gas_keys(std::vector<KeySpec>& k) {
 
 // Keys of the cylinder and its valves.
 void add_cylinder_keys(std::vector<KeySpec>& k) {
-  k.push_back(number(
-      "cylinder.bore_mm", "mm", "piston diameter", 1e-3, kPositive,
+  // Standard bores run from 2.5 mm (miniature) through ISO 6432 (8-25 mm) and ISO 15552
+  // (32-320 mm); 500 mm bounds the largest special cylinders.
+  k.push_back(plausible(
+      "cylinder.bore_mm", "mm", "piston diameter", 1e-3, Range{1.0, 500.0},
+      "pneumatic bores run from 2.5 mm to 320 mm (ISO 6432, ISO 15552); is the unit mm?",
       [](auto& s) -> auto& { return s.cylinder.bore_m; }));
   k.push_back(number(
       "cylinder.rod_mm", "mm", "rod diameter, < bore", 1e-3, kNonNegative,
@@ -418,8 +461,8 @@ void apply_setting(Scenario& scenario, const std::string& key, const SettingValu
                 fmt::format("expected a finite number in {}, got {}", spec.info.unit, *number));
   }
   if (!spec.range.contains(*number)) {
-    throw Error(place, fmt::format("{} {} is out of range: expected {}", *number, spec.info.unit,
-                                   spec.info.range));
+    throw Error(place, fmt::format("{} {} is out of range: expected {}{}", *number, spec.info.unit,
+                                   spec.info.range, spec.why.empty() ? "" : " (" + spec.why + ")"));
   }
   if (spec.whole && *number != std::floor(*number)) {
     throw Error(place, fmt::format("expected a whole number, got {}", *number));
@@ -452,7 +495,13 @@ std::string setting_text(const Scenario& scenario, const std::string& key) {
 // writes no comments. The reader is toml++; a test reads every printed key back.
 std::string scenario_to_toml(const Scenario& scenario) {
   std::string out =
-      "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n";
+      "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n"
+      "#\n"
+      "# The defaults are the virtual rig (docs/virtual_rig.md), not a generic cylinder: its\n"
+      "# load sits on its own guide, coupled to the rod by a spring (load.coupling = \"spring\",\n"
+      "# a mode near 20 Hz), and its seal is a generalized Maxwell-slip model fitted to that rig.\n"
+      "# For your own cylinder, set load.coupling = \"rigid\" unless its mount is compliant,\n"
+      "# and give its seal (friction.*), bore, stroke and mass; docs/scenario.md says how.\n";
   std::string section;
   for (const auto& k : keys()) {
     const auto dot = k.info.key.find('.');

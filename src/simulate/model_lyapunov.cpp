@@ -250,6 +250,12 @@ ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, Mod
   // Below the floor the two trajectories' own integration errors are renormalised as if they
   // were divergence (kPlantSeparationPerTolerance).
   const double min_separation = kPlantSeparationPerTolerance * o.relative_tolerance;
+  if (!(o.separation <= kPlantMaxSeparation)) {
+    throw Error("lyapunov.separation",
+                fmt::format("{:g} is not small against the motion: at most {:g} (10 kPa on P1); "
+                            "the default is {:g}",
+                            o.separation, kPlantMaxSeparation, ModelLyapunovOptions{}.separation));
+  }
   // A separation that rounds to just below the floor is at the floor.
   if (o.separation < min_separation * (1.0 - 1e-9)) {
     throw Error("lyapunov.separation",

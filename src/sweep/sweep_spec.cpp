@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pneumachaos/analysis/surrogates.hpp"
@@ -16,6 +17,25 @@ ModelLyapunovOptions ModelExponentSpec::options(double duration_s) const {
   o.renormalize_s = renormalize_s;
   o.until_terminal_event = true;  // volumes following the piston: the rest of the stroke
   return o;
+}
+
+std::vector<std::string> SweepSpec::warnings() const {
+  std::vector<std::string> w;
+  const VariationParams& v = base.variation;
+  const bool gridded = std::any_of(axes.begin(), axes.end(), [](const GridAxis& a) {
+    return a.key.starts_with("variation.");
+  });
+  if (repeats > 1 && v.friction_rel_sd == 0.0 && v.texture_rel == 0.0 &&
+      v.sensor_noise_m_per_s == 0.0 && !gridded) {
+    w.push_back(fmt::format(
+        "the {} repeats of each point are identical copies: variation.friction_rel_sd, "
+        "variation.texture_rel and variation.sensor_noise_mm_per_s are all 0, so every "
+        "incidence is 0 or 1. The report's maps (reproduce) use --set "
+        "variation.friction_rel_sd=0.03 --set variation.texture_rel=0.02; or use --repeats 1",
+        repeats));
+  }
+  for (const auto& n : scenario_notes(base)) w.push_back(n);
+  return w;
 }
 
 void ModelExponentSpec::validate(double duration_s) const {

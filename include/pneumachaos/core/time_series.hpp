@@ -2,6 +2,7 @@
 // Uniformly sampled, multi-channel time series with named channels and units.
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -47,5 +48,12 @@ class TimeSeries {
   double start_s_;
   std::vector<Channel> channels_;
 };
+
+/// The samples with from_s <= t <= to_s (times on the series' own clock, start_s included),
+/// e.g. to skip a start-up transient; unset bounds are the series' ends. Throws Error
+/// naming "from" or "to" for a bound that is not finite, lies outside the record, or leaves
+/// fewer than 2 samples.
+TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
+                       std::optional<double> to_s);
 
 }  // namespace pneumachaos

@@ -60,10 +60,16 @@ struct ModelFit {
 
 struct FrictionFits {
   std::vector<ModelFit> fits;
-  std::string preferred_model;  ///< smallest BIC among the converged fits; "" if none
+  /// Smallest BIC among the converged fits with Fc <= Fs; "" if none.
+  std::string preferred_model;
   std::string criterion = "BIC";
-  /// The first fit that did not converge, if any (the CLI exits 3).
+  /// What a reader must know about the fits, one sentence each: a fit that did not converge
+  /// (shown, marked, never preferred), a fit whose kinetic level Fc exceeds its static Fs.
+  std::vector<std::string> warnings;
+  /// The first fit that did not converge, if any.
   [[nodiscard]] const ModelFit* failed() const;
+  /// Whether at least one fit converged.
+  [[nodiscard]] bool any_converged() const;
 };
 
 FrictionFits fit_friction(const FrictionEstimate& estimate, const FrictionFitOptions& options);
@@ -74,7 +80,9 @@ FrictionFits fit_friction(const FrictionEstimate& estimate, const FrictionFitOpt
 FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<std::string>& models,
                                    bool pressure_dependent, const std::string& where);
 
-/// Throws RunError naming the first fit that did not converge, with Ceres's reason.
+/// Throws RunError when fits were made and none converged (naming the first, with Ceres's
+/// reason); a fit that did not converge beside one that did is a warning, not a failure: the
+/// models that converged are reported (issue 33).
 void require_converged(const FrictionFits& fits);
 
 /// The steady friction of a fitted law at velocity v (gauge sum for pressure dependence).

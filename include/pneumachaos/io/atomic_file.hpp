@@ -10,9 +10,18 @@
 
 namespace pneumachaos {
 
+/// One policy for every output path, checked before any work (issue 33): why `path` cannot
+/// be written as an output file, or "" when it can. It must not be a directory, and the
+/// nearest of its ancestors that exists must be a writable directory: missing directories
+/// are created when the file is written. No side effects.
+std::string output_file_problem(const std::string& path);
+/// The same for an output directory: an existing path must be a directory.
+std::string output_directory_problem(const std::string& path);
+
 class AtomicFile {
  public:
-  /// Opens "<path>.part"; throws Error if it cannot be created.
+  /// Opens "<path>.part", creating missing directories; throws Error if it cannot be created
+  /// (a directory at `path` included).
   explicit AtomicFile(std::string path);
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -42,7 +51,7 @@ class AtomicFile {
 /// has been written completely, so a failure never leaves some outputs looking complete.
 class OutputSet {
  public:
-  /// Opens `path` for writing (creating its directory); refuses a path that is a directory.
+  /// Opens `path` for writing as AtomicFile does.
   std::ofstream& add(const std::string& path);
   /// Checks every file, then moves them all into place; if a move fails, the files already
   /// moved are removed again and RunError is thrown.

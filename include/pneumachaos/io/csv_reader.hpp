@@ -14,7 +14,8 @@ struct CsvSeriesOptions {
   /// Header name, matched exactly or before a "[unit]" suffix; in a file without a header the
   /// column's number (1 = first; the default "v" then means the first column).
   std::string column = "v";
-  /// Sample rate [Hz]; when unset the file needs a time column (t, time, t[s], time_s).
+  /// Sample rate [Hz]; when unset the file needs a time column (t, time, t[s], time_s); when
+  /// set and the file has one, the two must agree (within time_jitter) or the read is refused.
   std::optional<double> rate_Hz;
   /// Largest allowed deviation of a time step from the median step, relative to it; A/D
   /// timestamps jitter a little, a missing sample (a step of 2) is refused.

@@ -20,6 +20,10 @@ std::string header_unit(const std::string& header);
 /// carries, either whole or as header_name(); -1 when none does.
 int find_column(const std::vector<std::string>& names, const std::vector<std::string>& wanted);
 
+/// When a header's fields look separated by ';' (a spreadsheet export in a locale with decimal
+/// commas), what to do about it, starting with "; "; else "". Appended to a "no column" error.
+std::string separator_hint(const std::vector<std::string>& names);
+
 /// A finite double, or Error(where) saying what the cell holds instead.
 double parse_cell(const std::string& field, const std::string& where);
 

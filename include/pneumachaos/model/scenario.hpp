@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "pneumachaos/core/hybrid_system.hpp"
 #include "pneumachaos/core/run_settings.hpp"
@@ -116,6 +117,11 @@ struct Scenario {
 /// chaotic point S1 = 2.70, S2 = 0.35 mm^2. Every value and its reasoning: docs/virtual_rig.md
 /// and docs/scenario.md.
 Scenario default_scenario();
+
+/// What a user should know about a valid scenario, one sentence each (commands print them as
+/// notes): today, a cylinder other than the virtual rig's (another bore) that still carries
+/// the rig's compliant load mount, whose mode then dominates its record (issue 33).
+std::vector<std::string> scenario_notes(const Scenario& scenario);
 
 /// The simple rig: one rigid moving mass, Stribeck seal friction with true stiction, volumes
 /// following the piston (the paper's own model with a Stribeck curve). Scenario{} is this.

@@ -35,7 +35,9 @@ struct ModelLyapunovOptions {
   /// A terminal event (the piston at its stroke end) during the measurement ends it there
   /// instead of failing it: the exponent and its blocks then span the time measured. A run
   /// with moving volumes has no fixed length, so a sweep measures "the rest of the stroke".
-  bool until_terminal_event = false;
+  /// On by default: the default scenario's stroke ends at 7.5 s, before 5 s of transient and
+  /// 40 s of measurement would (issue 33); false makes a stroke end fail the measurement.
+  bool until_terminal_event = true;
   void validate() const;
 };
 
@@ -62,6 +64,10 @@ class Plant;
 /// model exponent's separation floor": at rtol 1e-9 a periodic point reads 0.0 at 1e-3,
 /// 0.7-1.8 1/s at 1e-4 and 3.7-8.5 1/s at 3e-5).
 inline constexpr double kPlantSeparationPerTolerance = 1e6;
+/// The cylinder's largest separation in the scaled norm: 1 = 10 kPa on P1, already a tenth
+/// of the pressures' swing; a larger one measures no tangent growth, and one beyond the
+/// motion reaches the stroke end before any renormalisation (issue 33).
+inline constexpr double kPlantMaxSeparation = 1.0;
 
 /// The cylinder's exponent from the start of a run: the plant's state scales, the separation
 /// along P1 (which leaves a stuck contact stuck), rtol 1e-9 and atol 1e-12 times

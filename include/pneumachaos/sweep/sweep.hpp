@@ -49,6 +49,9 @@ struct SweepSpec {
   ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
   AdaptiveSpec adaptive;  ///< needs exactly two axes; part of the fingerprint when enabled
   void validate() const;
+  /// What a user should know before the runs start, one sentence each: repeats that are
+  /// identical copies (no run-to-run variation set or gridded), so every incidence is 0 or 1.
+  [[nodiscard]] std::vector<std::string> warnings() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
   [[nodiscard]] std::size_t runs() const { return points() * repeats; }
   /// Identifies the spec: a resume with another spec is refused.
