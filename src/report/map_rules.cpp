@@ -11,7 +11,7 @@
 namespace pneumachaos {
 namespace {
 
-bool stick(const PointSummary& p) { return p.stick_slip_incidence >= 0.5; }
+bool stick(const PointSummary& p) { return in_stick_slip_region(p); }
 
 // Within one grid step of the stick-slip border: a 4-neighbour of another class.
 bool near_border(const std::vector<PointSummary>& pts, std::size_t n1, std::size_t n2,
@@ -174,26 +174,10 @@ bool chaos_beyond_false_positives(const SweepSummary& s) {
   return chaotic_runs(s) > false_positive_allowance(judged_runs(s));
 }
 
-namespace {
-
-// regime_incidence follows sweep_regime_names(): steady first, undetermined last.
-struct PointMotion {
-  bool decided = false, steady = false;
-};
-PointMotion motion(const PointSummary& p) {
-  if (p.regime_incidence.empty()) return {};
-  const double steady = p.regime_incidence.front(), undetermined = p.regime_incidence.back();
-  const double determined = 1.0 - undetermined;
-  return {determined >= 0.5 && p.runs > p.failed, steady > 0.5 * determined};
-}
-
-}  // namespace
-
 std::size_t oscillating_points(const SweepSummary& s) {
   return static_cast<std::size_t>(
       std::count_if(s.per_point.begin(), s.per_point.end(), [](const PointSummary& p) {
-        const PointMotion m = motion(p);
-        return m.decided && !m.steady;
+        return point_motion(p) == Motion::kOscillating;
       }));
 }
 
@@ -219,15 +203,15 @@ SignRuleCounts count_sign_rule(const std::vector<std::optional<bool>>& damped,
   SignRuleCounts c;
   for (std::size_t i = 0; i < damped.size() && i < sweep.per_point.size(); ++i) {
     if (!damped[i]) continue;
-    const PointMotion m = motion(sweep.per_point[i]);
-    if (!m.decided) {
+    const Motion m = point_motion(sweep.per_point[i]);
+    if (m == Motion::kUndecided) {
       ++c.undecided;
     } else if (*damped[i]) {
       ++c.damped;
-      c.damped_steady += m.steady ? 1 : 0;
+      c.damped_steady += m == Motion::kSteady ? 1 : 0;
     } else {
       ++c.excited;
-      c.excited_moving += m.steady ? 0 : 1;
+      c.excited_moving += m == Motion::kSteady ? 0 : 1;
     }
   }
   return c;

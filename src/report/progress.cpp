@@ -46,10 +46,13 @@ std::string ReproduceProgress::line_locked() const {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   // The sweeps dominate the time: extrapolate from the runs finished so far.
   const std::size_t done = std::min(total_runs_, runs_ + current_);
+  // Adaptive maps run only part of their grid: the total and the time left are upper bounds.
   const std::string eta =
-      done == 0 ? "ETA unknown"
-                : fmt::format("ETA {:.0f} s", elapsed * double(total_runs_ - done) / double(done));
-  return fmt::format("reproduce: stage {}/{} ({}), {} of {} sweep runs done, {:.0f} s elapsed, {}",
+      done == 0 ? "time left unknown"
+                : fmt::format("at most {:.0f} s left",
+                              elapsed * double(total_runs_ - done) / double(done));
+  return fmt::format("reproduce: stage {}/{} ({}), {} sweep runs done (at most {}), {:.0f} s "
+                     "elapsed, {}",
                      done_, stages_, what_, done, total_runs_, elapsed, eta);
 }
 

@@ -68,6 +68,15 @@ bool in_stick_slip_region(const PointSummary& p) {
   return judged(p) && p.stick_slip_incidence >= 0.5;
 }
 
+Motion point_motion(const PointSummary& p) {
+  // regime_incidence follows sweep_regime_names(): steady first, undetermined last.
+  if (!judged(p) || p.regime_incidence.empty()) return Motion::kUndecided;
+  const double steady = p.regime_incidence.front();
+  const double determined = 1.0 - p.regime_incidence.back();
+  if (determined < 0.5) return Motion::kUndecided;
+  return steady > 0.5 * determined ? Motion::kSteady : Motion::kOscillating;
+}
+
 ChaosClass chaos_class(const PointSummary& p) {
   if (!judged(p) || p.chaos_incidence <= 0.0) return ChaosClass::kNone;
   return p.chaos_incidence >= 1.0 ? ChaosClass::kAll : ChaosClass::kSome;

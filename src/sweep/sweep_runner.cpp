@@ -174,10 +174,12 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
 }
 
 // What an adaptive map tells apart at an evaluated point: the stick-slip region, the chaos
-// class and whether any run failed; a cell whose points differ in it is refined.
+// class, whether the motion settles (the paper's damped / self-excited, which the report's
+// sign rule and damping rows read) and whether any run failed; a cell whose points differ in
+// it is refined.
 int map_class(const PointSummary& p) {
   return (in_stick_slip_region(p) ? 1 : 0) + 2 * static_cast<int>(chaos_class(p)) +
-         (p.failed > 0 ? 8 : 0);
+         (p.failed > 0 ? 8 : 0) + 16 * static_cast<int>(point_motion(p));
 }
 
 // The runs of `points` that are not finished yet and fall to this rank.

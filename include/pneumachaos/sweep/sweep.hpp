@@ -134,6 +134,11 @@ struct PointSummary {
 enum class ChaosClass { kNone = 0, kSome = 1, kAll = 2 };
 bool in_stick_slip_region(const PointSummary& p);
 ChaosClass chaos_class(const PointSummary& p);
+/// Whether the motion settles at a point: undecided when fewer than half of its successful
+/// runs got a determined regime (short or irregular records), else steady when most of its
+/// determined runs are steady, oscillating otherwise (the paper's damped / self-excited).
+enum class Motion { kUndecided = 0, kSteady = 1, kOscillating = 2 };
+Motion point_motion(const PointSummary& p);
 
 /// Every regime name a run can carry (columns of points.csv).
 const std::vector<std::string>& sweep_regime_names();
