@@ -142,6 +142,14 @@ TEST(MapRules, FalsePositivesCountOnlyJudgedRuns) {
   EXPECT_FALSE(chaos_beyond_false_positives(s));
   for (int i = 0; i < 30; ++i) s.per_point[i].chaos_incidence = 0.2;  // 30 of 100 judged
   EXPECT_TRUE(chaos_beyond_false_positives(s));
+  // A point an adaptive map inferred from its cell stands for as many runs as an evaluated one.
+  PointSummary inferred = point_with(0.2, 0.6);
+  inferred.runs = 0;
+  inferred.inferred = true;
+  inferred.chaos_incidence = 0.2;
+  s.per_point.push_back(inferred);
+  EXPECT_EQ(judged_runs(s), 101u);
+  EXPECT_EQ(chaotic_runs(s), 31u);
 }
 
 }  // namespace

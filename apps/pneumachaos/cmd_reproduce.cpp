@@ -17,6 +17,9 @@ Action add_reproduce(CLI::App& app) {
       ->check(output_directory_check());
   cmd->add_flag("--quick", o->quick,
                 "coarse grid and short records: the whole report in under a minute");
+  cmd->add_flag("--full-maps", o->full_maps,
+                "simulate every point of every map (about twice the runs) instead of refining "
+                "the maps adaptively at their borders");
   cmd->add_option("--threads", o->threads, "worker threads for the sweeps (default: all cores)");
   return [o]() {
     const ReproduceResult r = reproduce(*o);

@@ -153,19 +153,36 @@ RuleResult no_chaos_beyond_false_positives(std::size_t chaotic, std::size_t judg
                                  chaotic, 100 * kVerdictFalsePositiveRate, judged, allow));
 }
 
-std::size_t chaotic_runs(const SweepSummary& s) {
-  double n = 0.0;
+namespace {
+
+// The runs a point stands for on the map: its successful runs, or for a point an adaptive map
+// inferred from its cell, as many as an evaluated point has (the map's repeats), so that counts
+// over the map mean the same with and without refinement.
+std::vector<double> runs_standing_for(const SweepSummary& s) {
+  std::size_t repeats = 0;
+  for (const PointSummary& p : s.per_point) repeats = std::max(repeats, p.runs);
+  std::vector<double> w;
   for (const PointSummary& p : s.per_point)
-    n += p.chaos_incidence * static_cast<double>(p.runs - p.failed);
+    w.push_back(static_cast<double>(p.inferred ? repeats : p.runs - p.failed));
+  return w;
+}
+
+}  // namespace
+
+std::size_t chaotic_runs(const SweepSummary& s) {
+  const std::vector<double> w = runs_standing_for(s);
+  double n = 0.0;
+  for (std::size_t i = 0; i < w.size(); ++i) n += s.per_point[i].chaos_incidence * w[i];
   return static_cast<std::size_t>(std::lround(n));
 }
 
 std::size_t judged_runs(const SweepSummary& s) {
+  const std::vector<double> w = runs_standing_for(s);
   double n = 0.0;
-  for (const PointSummary& p : s.per_point) {
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const PointSummary& p = s.per_point[i];
     if (p.regime_incidence.empty()) continue;
-    const double judged = 1.0 - p.regime_incidence.front() - p.regime_incidence.back();
-    n += judged * static_cast<double>(p.runs - p.failed);
+    n += (1.0 - p.regime_incidence.front() - p.regime_incidence.back()) * w[i];
   }
   return static_cast<std::size_t>(std::lround(n));
 }

@@ -128,7 +128,7 @@ Scenario paper_conditions(Scenario s) {
 }
 
 // The maps' grid and run-to-run variation (docs/virtual_rig.md).
-SweepSpec map_spec(const Scenario& base, bool quick) {
+SweepSpec map_spec(const Scenario& base, bool quick, bool full_maps) {
   SweepSpec spec;
   spec.base = base;
   spec.base.variation.friction_rel_sd = 0.03;
@@ -141,7 +141,7 @@ SweepSpec map_spec(const Scenario& base, bool quick) {
   // Adaptive maps (docs/sweep.md, "Adaptive maps"): the grid's borders are run to single steps,
   // the uniform cells inferred; on the paper's maps every point's classes agree with the full
   // grid's at about a quarter of the runs.
-  spec.adaptive.enabled = true;
+  spec.adaptive.enabled = !full_maps;
   return spec;
 }
 
@@ -192,7 +192,7 @@ class ReportBuilder {
       : o_(o),
         fig_dir_(o.out_dir + "/figures"),
         base_(paper_conditions(default_scenario())),
-        spec_(map_spec(base_, o.quick)),
+        spec_(map_spec(base_, o.quick, o.full_maps)),
         stage_(o.progress, 9, 4 * spec_.runs()) {}
 
   // Fig. 2: the paper's own model in both circuits, at three valve openings each, under the
@@ -280,8 +280,9 @@ class ReportBuilder {
       apply_setting(s.base, "supply.pressure_MPa", c.Ps_MPa, "reproduce");
       s.base.set_total_moving_mass(c.m_kg);
       SweepOptions so;
-      // "adaptive_": a report folder of full sweeps from an earlier version is not resumed.
-      so.out_dir = o_.out_dir + "/sweeps/adaptive_" + c.name.substr(c.name.find("map_") + 4);
+      // Adaptive and full maps keep their own folders, so either resumes its own sweeps.
+      so.out_dir = o_.out_dir + "/sweeps/" + (o_.full_maps ? "" : "adaptive_") +
+                   c.name.substr(c.name.find("map_") + 4);
       so.threads = o_.threads;
       so.progress = o_.progress;
       so.on_progress = [this](std::size_t done, std::size_t) { stage_.sweep_runs(done); };
@@ -328,12 +329,15 @@ class ReportBuilder {
   [[nodiscard]] std::string settings() const {
     const VariationParams& v = spec_.base.variation;
     return fmt::format(
-        "Maps: {} grid ({} x {} points, refined adaptively: {} of {} runs made, the other "
-        "points inferred from their cells), {} runs per point, {} s records{}, {:g} % seal "
+        "Maps: {} grid ({} x {} points, {}: {} of {} runs made), {} runs per point, {} s "
+        "records{}, {:g} % seal "
         "friction scatter and a {:g} % bore texture per run; m is the total moving mass{}. "
         "Chaotic example (Figs. 3 and 7): Ps 0.25 MPa, m {:g} kg, no scatter or texture, {}.",
         o_.quick ? "quick" : "the paper's", spec_.axes[0].values.size(),
-        spec_.axes[1].values.size(), runs_made(), maps_.size() * spec_.runs(), spec_.repeats,
+        spec_.axes[1].values.size(),
+        o_.full_maps ? "every point simulated"
+                     : "refined adaptively, the uniform cells' points inferred",
+        runs_made(), maps_.size() * spec_.runs(), spec_.repeats,
         spec_.base.run.duration_s,
         base_.cylinder.volumes_frozen() ? "" : " or up to the stroke end",
         100 * v.friction_rel_sd, 100 * v.texture_rel,

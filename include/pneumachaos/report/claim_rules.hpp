@@ -175,7 +175,8 @@ std::size_t judged_runs(const SweepSummary& s);
 /// be read.
 bool chaos_beyond_false_positives(const SweepSummary& s);
 
-/// Chaotic runs of a map (incidence times successful runs, summed).
+/// Chaotic runs of a map (incidence times successful runs, summed; a point an adaptive map
+/// inferred counts as many runs as an evaluated one).
 std::size_t chaotic_runs(const SweepSummary& s);
 /// Points whose determined runs mostly oscillate (not steady); undetermined runs left out.
 std::size_t oscillating_points(const SweepSummary& s);

@@ -15,6 +15,9 @@ struct ReproduceOptions {
   /// A coarse grid (6 x 7 points, 2 repeats, 5 s records) and shorter averages: the whole
   /// report in well under a minute. Full: the paper's grids, 5 repeats, 10 s records.
   bool quick = false;
+  /// Every point of every map simulated (about twice the runs); by default the maps are
+  /// refined adaptively (docs/sweep.md, "Adaptive maps") and the uniform cells inferred.
+  bool full_maps = false;
   std::size_t threads = 0;
   bool progress = true;  ///< stage lines on a terminal only
 };
