@@ -2,6 +2,7 @@
 // for bit, their files do not depend on threads or resumes, and (label long) their maps agree
 // with the full grid's on the paper's grid.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -169,6 +170,29 @@ TEST(AdaptiveSweep, NeedsExactlyTwoAxesAndACoarseStep) {
   SweepSpec off = small_map(false);
   off.adaptive.coarse_step = 7;
   EXPECT_EQ(off.fingerprint(), small_map(false).fingerprint());
+  // Following the motion evaluates other points: another sweep, refused as such on resume.
+  SweepSpec motion = small_map(true);
+  motion.adaptive.follow_motion = true;
+  EXPECT_NE(motion.fingerprint(), small_map(true).fingerprint());
+}
+
+// Following the motion refines where a point's regime turns from settling to oscillating, so
+// an inferred point's motion is its cell's: no inferred point's motion differs from the full
+// sweep's on a small map with both (S2 0.05-1.85 mm^2: stick-slip rows, steady rows).
+TEST(AdaptiveSweep, FollowingTheMotionInfersNoMotionWrongly) {
+  SweepSpec full = small_map(false);
+  full.axes[1] = parse_grid_axis("circuit.S2_mm2=0.05:1.85:0.2");
+  SweepSpec adaptive = full;
+  adaptive.adaptive = {true, 2, true};
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("pneumachaos_adaptive_motion_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const SweepSummary f = run_into(full, (dir / "full").string(), 2);
+  const SweepSummary a = run_into(adaptive, (dir / "adaptive").string(), 2);
+  ASSERT_GT(a.inferred_points, 0u);
+  for (std::size_t p = 0; p < f.per_point.size(); ++p)
+    EXPECT_EQ(point_motion(a.per_point[p]), point_motion(f.per_point[p])) << p;
+  std::filesystem::remove_all(dir);
 }
 
 // Issue 35's validation (label long; docs/sweep.md "Adaptive maps"): the paper's grid, 5

@@ -152,6 +152,10 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
       "for a map over two axes: run a coarse lattice of the grid, then refine only the cells "
       "whose points differ (stick-slip, chaos in none / some / all runs, failed runs) down to "
       "the grid's step; the other points are inferred from their cell (points.csv: inferred)");
+  cmd->add_flag("--adaptive-motion", a.adaptive.follow_motion,
+                "with --adaptive: also refine where the motion changes between settling and "
+                "oscillating, so an inferred point's regime can be read (about twice the runs)")
+      ->needs(adaptive);
   cmd->add_option("--adaptive-step", a.adaptive.coarse_step,
                   "with --adaptive: grid steps between the coarse lattice's lines (default 4); "
                   "a region narrower than this between the lattice's points can be missed")

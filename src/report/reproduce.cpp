@@ -142,6 +142,7 @@ SweepSpec map_spec(const Scenario& base, bool quick, bool full_maps) {
   // the uniform cells inferred; on the paper's maps every point's classes agree with the full
   // grid's at about a quarter of the runs.
   spec.adaptive.enabled = !full_maps;
+  spec.adaptive.follow_motion = true;  // the sign rule and the damping rows read it
   return spec;
 }
 

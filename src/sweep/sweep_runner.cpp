@@ -174,12 +174,12 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
 }
 
 // What an adaptive map tells apart at an evaluated point: the stick-slip region, the chaos
-// class, whether the motion settles (the paper's damped / self-excited, which the report's
-// sign rule and damping rows read) and whether any run failed; a cell whose points differ in
+// class, whether any run failed and, when asked, whether the motion settles (the paper's
+// damped / self-excited, which the report's sign rule reads); a cell whose points differ in
 // it is refined.
-int map_class(const PointSummary& p) {
+int map_class(const PointSummary& p, bool follow_motion) {
   return (in_stick_slip_region(p) ? 1 : 0) + 2 * static_cast<int>(chaos_class(p)) +
-         (p.failed > 0 ? 8 : 0) + 16 * static_cast<int>(point_motion(p));
+         (p.failed > 0 ? 8 : 0) + (follow_motion ? 16 * static_cast<int>(point_motion(p)) : 0);
 }
 
 // The runs of `points` that are not finished yet and fall to this rank.
@@ -217,7 +217,8 @@ std::vector<std::size_t> run_adaptive(const SweepSpec& spec, const SweepOptions&
     failure.attempt([&] {
       if (dist.size() > 1) records = detail::Journal::read_all(options.out_dir, spec.fingerprint());
       const SweepSummary so_far = summarize(spec, records);
-      for (std::size_t p : batch) classes[p] = map_class(so_far.per_point[p]);
+      for (std::size_t p : batch)
+        classes[p] = map_class(so_far.per_point[p], spec.adaptive.follow_motion);
     });
     failure.agree(dist, options.out_dir);
   }

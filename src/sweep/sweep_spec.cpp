@@ -97,6 +97,7 @@ std::string SweepSpec::fingerprint() const {
                       m.transient_s, m.measure_s, m.renormalize_s);
   // Only when on, so that full sweeps keep their fingerprint.
   if (adaptive.enabled) text += fmt::format("adaptive coarse_step={}\n", adaptive.coarse_step);
+  if (adaptive.enabled && adaptive.follow_motion) text += "adaptive follow_motion\n";
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (unsigned char c : text) {
     h ^= c;

@@ -34,6 +34,10 @@ struct ModelExponentSpec {
 struct AdaptiveSpec {
   bool enabled = false;
   std::size_t coarse_step = 4;  ///< grid steps between the first lattice's lines, >= 1
+  /// Also refine where the motion changes between settling and oscillating (point_motion):
+  /// needed where a point's regime is read, not only its stick-slip and chaos classes (the
+  /// report's sign rule); about twice the runs on the paper's maps.
+  bool follow_motion = false;
 };
 
 struct SweepSpec {
