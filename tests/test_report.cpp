@@ -8,12 +8,14 @@
 #include <regex>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/report/figures.hpp"
 #include "pneumachaos/report/reproduce.hpp"
+#include "pneumachaos/stability/stability_map.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -272,6 +274,45 @@ TEST(Report, IncidenceMapMarksInferredPoints) {
       << adaptive.data[2].second;
   EXPECT_NE(adaptive.plot.find("'m_inferred.dat' using 1:2 with points"), std::string::npos);
   EXPECT_NE(adaptive.caption.find("1 of the 4 points were not run"), std::string::npos);
+}
+
+// Figures a person reads (issue 33): the stability map's colour scale is set by the bulk of
+// its values, not by the one extreme that left 87 % of the points near-white.
+TEST(Figures, StabilityMapScaleFollowsTheBulkAndMarksTheExtremes) {
+  StabilityMap m;
+  m.axes = {parse_grid_axis("circuit.S1_mm2=2.45:2.5:0.05"),
+            parse_grid_axis("circuit.S2_mm2=0.05:2.9:0.15")};
+  for (std::size_t i = 0; i < 40; ++i) {
+    StabilityMapPoint p;
+    p.coordinates = {i < 20 ? 2.45 : 2.5, 0.05 + 0.15 * static_cast<double>(i % 20)};
+    p.result.verdict_full = StabilityVerdict::kDamped;
+    p.result.max_real_part_per_s = i % 20 == 0 ? 265.0 : -3.0 + 0.1 * static_cast<double>(i % 20);
+    m.points.push_back(p);
+  }
+  const double scale = stability_colour_scale(m);
+  EXPECT_LT(scale, 10.0);  // the old scale: 265
+  EXPECT_GE(scale, 3.0);
+  const FigureSpec f = stability_map_figure(m);
+  EXPECT_NE(f.plot.find(fmt::format("set cbrange [-{0}:{0}]", scale)), std::string::npos);
+  EXPECT_NE(f.plot.find("pt 6"), std::string::npos);  // the extremes, marked
+  EXPECT_NE(f.caption.find("the 2 points beyond it"), std::string::npos) << f.caption;
+}
+
+// Fig. 7b's exponent panel holds where both running estimates settle (Wolf's was clipped at
+// three times the model's last value), and Figs. 3 and 7b keep their legends off the curves.
+TEST(Figures, ExponentPanelHoldsBothEstimatesAndLegendsStayOffTheCurves) {
+  const std::vector<double> wolf = {40, 9, 6, 5, 4.8, 4.6, 4.5, 4.4};
+  const std::vector<double> model = {30, 3, 1.5, 1.2, 1.1, 1.0, 0.9, 1.0};
+  const auto range = lyapunov_panel_range(wolf, model);
+  EXPECT_GT(range[1], 4.8);
+  EXPECT_LT(range[1], 10.0);
+  EXPECT_EQ(range[0], 0.0);
+  EXPECT_LT(lyapunov_panel_range({-1, -2, -2}, {})[0], -2.0);
+  TimeSeries t(1000.0);
+  t.add_channel("v", "m/s", std::vector<double>(10, 0.05));
+  t.add_channel("F_friction", "N", std::vector<double>(10, 20.0));
+  EXPECT_NE(friction_loops_figure({{"a", t}}, 0.01, {}).plot.find("set key below"),
+            std::string::npos);
 }
 
 }  // namespace

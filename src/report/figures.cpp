@@ -87,7 +87,7 @@ FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, dou
       seconds);
   std::string plot =
       "set grid\nset xlabel 'piston velocity [mm/s]'\nset ylabel 'seal friction [N]'\n"
-      "set key top left\n" + loop_letters(letters) + "plot ";
+      "set key below\n" + loop_letters(letters) + "plot ";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const auto& s = records[i].series;
     const std::string file = fmt::format("fig3_record{}.dat", i + 1);
@@ -110,6 +110,20 @@ FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, dou
   return f;
 }
 
+double stability_colour_scale(const StabilityMap& map) {
+  std::vector<double> a;
+  for (const auto& p : map.points)
+    if (p.result.has_equilibrium()) a.push_back(std::abs(p.result.max_real_part_per_s));
+  if (a.empty()) return 1.0;
+  const auto k = (a.size() - 1) / 2;
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
+  // Twice the median: the typical point sits mid-way to full colour whatever its sign.
+  // Rounded up to a readable number, at least 1 1/s.
+  const double q = std::max(1.0, 2.0 * a[k]);
+  const double step = std::pow(10.0, std::floor(std::log10(q)));
+  return std::ceil(q / step) * step;
+}
+
 FigureSpec stability_map_figure(const StabilityMap& map) {
   FigureSpec f;
   f.name = "stability_map";
@@ -117,26 +131,32 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
       "Stability of the steady motion over S1 x S2 (full-model Jacobian): largest real "
       "part of the eigenvalues, red self-excited, blue damped; crosses: no steady motion.";
   std::string table = "# S1[mm^2] S2[mm^2] max_real_part[1/s] (NaN: no equilibrium)\n";
-  double extreme = 1.0;  // symmetric about 0 so white stays neutral; never clips a value
-  for (const auto& p : map.points) {
-    if (p.result.has_equilibrium()) extreme = std::max(extreme, std::abs(p.result.max_real_part_per_s));
-  }
+  const double scale = stability_colour_scale(map);
   const std::size_t n2 = map.axes[1].values.size();
+  std::size_t beyond = 0;
   for (std::size_t i = 0; i < map.points.size(); ++i) {
     const auto& p = map.points[i];
     const double v = p.result.has_equilibrium() ? p.result.max_real_part_per_s : NAN;
     table += fmt::format("{} {} {}\n", p.coordinates[0], p.coordinates[1], v);
     if ((i + 1) % n2 == 0) table += "\n";
+    beyond += std::abs(v) > scale ? 1 : 0;
   }
+  f.caption += fmt::format(
+      " The colour scale is symmetric about 0 and set by the bulk of the values (+-{:g} 1/s, "
+      "twice their median size) so the sign shows near 0; the {} points beyond it are drawn "
+      "at full colour and marked with an open circle.",
+      scale, beyond);
   f.data = {{"stability_map.dat", table}};
   f.plot =
       "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]'\n"
       "set palette defined (-1 'blue', 0 'white', 1 'red')\n" +
-      fmt::format("set cbrange [-{0}:{0}]\n", std::ceil(extreme)) +
+      fmt::format("set cbrange [-{0}:{0}]\n", scale) +
       "set title 'Stability of the steady motion: largest real part of the eigenvalues'\n"
       "set view map\nset key off\n"
       "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:($3 != $3 ? $2 : 1/0) "
-      "with points pt 2 lc 'black'";
+      "with points pt 2 lc 'black', " +
+      fmt::format("'' using 1:(abs($3) > {} ? $2 : 1/0) with points pt 6 ps 0.6 lc 'black'",
+                  scale);
   return f;
 }
 
@@ -221,6 +241,23 @@ FigureSpec fig7a_record(const std::vector<double>& v, double rate_Hz, double sta
   return f;
 }
 
+}  // namespace
+
+std::array<double, 2> lyapunov_panel_range(const std::vector<double>& wolf,
+                                          const std::vector<double>& model) {
+  // The early running values are huge; the range holds the second halves of both estimates,
+  // where they settle, with a margin.
+  double lo = 0.0, hi = 1.0;
+  for (const auto* x : {&wolf, &model})
+    for (std::size_t k = x->size() / 2; k < x->size(); ++k) {
+      lo = std::min(lo, (*x)[k]);
+      hi = std::max(hi, (*x)[k]);
+    }
+  return {lo < 0.0 ? 1.2 * lo : 0.0, 1.5 * hi};
+}
+
+namespace {
+
 FigureSpec fig7b_indices(double rate_Hz, const AnalysisResult& a,
                          const std::vector<double>& model_t,
                          const std::vector<double>& model_running) {
@@ -263,16 +300,16 @@ FigureSpec fig7b_indices(double rate_Hz, const AnalysisResult& a,
       "lines\n"
       "unset logscale y\nset xrange [*:*]\nset title 'autocorrelation'\nset xlabel 'lag [s]'\n"
       "set ylabel 'r'\nplot 'fig7b_acf.dat' using 1:2 with lines, 0 lc 'gray'\n"
-      "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\nset key "
-      "bottom right\n"
-      "set yrange [0:{}]\n"
+      "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\n"
+      "set key below\nset yrange [{}:{}]\n"
       "plot 'fig7b_wolf.dat' using 1:2 with lines title 'Wolf (running)', 'fig7b_model.dat' "
-      "using "
-      "1:2 with lines title 'model (running)', {} with lines dt 2 title 'divergence curve'\n"
-      "unset multiplot",
-      // The early running values are huge; the range shows where the estimates settle.
-      std::max(10.0, 3.0 * (model_running.empty() ? 0.0 : model_running.back())),
-      a.divergence.found_linear_region ? a.divergence.lambda_per_s : 0.0);
+      "using 1:2 with lines title 'model (running)'{}\nunset multiplot",
+      lyapunov_panel_range(a.wolf.running_per_s, model_running)[0],
+      lyapunov_panel_range(a.wolf.running_per_s, model_running)[1],
+      // No linear region: no line, rather than one drawn at 0.
+      a.divergence.found_linear_region
+          ? fmt::format(", {} with lines dt 2 title 'divergence curve'", a.divergence.lambda_per_s)
+          : std::string());
   return f;
 }
 
@@ -282,7 +319,9 @@ FigureSpec fig7c_trajectory(const std::vector<double>& v, double rate_Hz,
   f.name = "fig7c_trajectory";
   f.caption = fmt::format(
       "Fig. 7c: the delay-embedded trajectory (v(t), v(t+tau), v(t+2 tau)) in mm/s, "
-      "tau = {:.0f} ms, 4 s of the settled record (start-up left out).",
+      "tau = {:.0f} ms: the first 4 s of the settled record analysed in Fig. 7b (the record "
+      "from the time Fig. 7a starts; what came before is left out). The narrow loops near "
+      "v = 0 are the piston nearly at rest between its swings.",
       1e3 * a.delay.delay / rate_Hz);
   const std::size_t tau = a.delay.delay;
   std::string t = "# v(t) v(t+tau) v(t+2tau) [mm/s]\n";
@@ -294,7 +333,8 @@ FigureSpec fig7c_trajectory(const std::vector<double>& v, double rate_Hz,
   f.width = 700;
   f.height = 600;
   f.plot =
-      "set xlabel 'v(t) [mm/s]'\nset ylabel 'v(t+tau) [mm/s]'\nset zlabel 'v(t+2tau) [mm/s]'\n"
+      "set xlabel 'v(t) [mm/s]'\nset ylabel 'v(t+tau) [mm/s]'\n"
+      "set zlabel 'v(t+2tau) [mm/s]' rotate parallel\nset lmargin at screen 0.12\n"
       "set view 60,30\n"
       "set key off\nsplot 'fig7c_trajectory.dat' using 1:2:3 with lines lw 0.6";
   return f;

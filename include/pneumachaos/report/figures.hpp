@@ -38,6 +38,13 @@ FigureSpec friction_loops_figure(const std::vector<LabelledRecord>& records, dou
                                  const std::vector<std::array<double, 2>>& steady,
                                  const std::vector<std::vector<LoopLabel>>& letters = {});
 FigureSpec stability_map_figure(const StabilityMap& map);
+/// The stability map's colour scale [1/s]: symmetric about 0, twice the median of |largest
+/// real part| rounded up (at least 1), so the sign shows near 0; larger values saturate.
+double stability_colour_scale(const StabilityMap& map);
+/// Fig. 7b's exponent panel: a y range holding the second halves of Wolf's and the model's
+/// running estimates (where they settle), from 0 (or below, for a negative estimate).
+std::array<double, 2> lyapunov_panel_range(const std::vector<double>& wolf,
+                                          const std::vector<double>& model);
 /// Chaos incidence in grey (white 0 %, black 100 %) with the stick-slip region hatched.
 FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
                                 const SweepSpec& spec, const SweepSummary& summary);
