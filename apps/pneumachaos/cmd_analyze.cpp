@@ -26,19 +26,36 @@ AnalysisResult analyzed(const Channel& channel, double rate_Hz, const AnalysisOp
   }
 }
 
+struct AnalyzeArgs {
+  std::string file;
+  std::string column = "v";
+  std::optional<double> rate_Hz, from_s, to_s;
+  std::string json;
+  std::string series_out;
+  bool no_wolf = false;
+  std::optional<std::string> surrogates, seed, dimension, delay, theiler;
+};
+
+// The command line's analysis settings, each checked and named by its flag.
+AnalysisOptions analysis_options(const AnalyzeArgs& a) {
+  AnalysisOptions options;
+  options.wolf = !a.no_wolf;
+  options.surrogates.count = surrogate_count_option(a.surrogates, 39);
+  if (a.seed) {
+    const long long seed = integer_option("--seed", *a.seed, LLONG_MIN);
+    options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer
+  }
+  options.dimension = option_or(a.dimension, "--dimension", 1, 0);
+  options.delay = option_or(a.delay, "--delay", 1, 0);
+  options.theiler_given = a.theiler.has_value();
+  options.theiler = option_or(a.theiler, "--theiler", 0, 0);
+  return options;
+}
+
 }  // namespace
 
 Action add_analyze(CLI::App& app) {
-  struct Args {
-    std::string file;
-    std::string column = "v";
-    std::optional<double> rate_Hz, from_s, to_s;
-    std::string json;
-    std::string series_out;
-    bool no_wolf = false;
-    std::optional<std::string> surrogates, seed, dimension, delay, theiler;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "analyze",
       "Chaos indices of a uniformly sampled record (measured or simulated): spectrum, "
@@ -77,17 +94,7 @@ Action add_analyze(CLI::App& app) {
   cmd->add_option("--theiler", args->theiler,
                   "Theiler window in samples (>= 0; default: max(delay, first ACF zero))");
   return [args]() {
-    AnalysisOptions options;
-    options.wolf = !args->no_wolf;
-    options.surrogates.count = surrogate_count_option(args->surrogates, 39);
-    if (args->seed) {
-      const long long seed = integer_option("--seed", *args->seed, LLONG_MIN);
-      options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer
-    }
-    options.dimension = option_or(args->dimension, "--dimension", 1, 0);
-    options.delay = option_or(args->delay, "--delay", 1, 0);
-    options.theiler_given = args->theiler.has_value();
-    options.theiler = option_or(args->theiler, "--theiler", 0, 0);
+    const AnalysisOptions options = analysis_options(*args);
     CsvSeriesOptions input;
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
