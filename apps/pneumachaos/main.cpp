@@ -4,7 +4,7 @@
 // program. Every other command line, the overall --help and --version included, goes to the
 // module libpneumachaos_cli.so, which holds every command: loading Ceres with SuiteSparse,
 // BLAS and LAPACK cost each start 1.4 ms of CPU, 5 % of an `analyze` of 1e4 samples
-// (docs/performance.md "Analysis (third round)", docs/architecture.md).
+// (docs/notes/performance.md, "Start-up"; docs/architecture.md).
 
 #include <fmt/format.h>
 

@@ -86,8 +86,8 @@ NewtonSums newton_sums(const DelayEmbedding& e, std::size_t i, double t) {
 // lie inside the record: there the cubic's fractional part is exactly 0 and it returns the
 // sample itself (at most the sign of a zero differs, which no sum below can carry: s starts
 // at +0 and 0 - (+-0) is +0), so the samples are read directly. This is the first of the two
-// steps of every alignment, half of Wolf's candidate placement (docs/performance.md
-// "Analysis (fourth round)").
+// steps of every alignment, half of Wolf's candidate placement (docs/notes/performance.md,
+// "Wolf's candidate placement").
 NewtonSums newton_sums_at_sample(const DelayEmbedding& e, std::size_t i, std::size_t j) {
   NewtonSums n;
   const double* x = e.series().data();

@@ -90,7 +90,7 @@ const ValueOrder& value_order(std::span<const double> x) {
 // for a series with repeats. A stable counting sort by each coordinate's value rank, last
 // coordinate first: the same order as comparing whole vectors (and then indices), in
 // dimension x (N + distinct values) steps. The comparison sort it replaces was 2.5 % of a
-// sweep, whose records rest (docs/performance.md "Analysis (second round)").
+// sweep, whose records rest (docs/notes/performance.md, "Neighbour search").
 std::vector<std::size_t> lexicographic_order(const DelayEmbedding& e, std::size_t points) {
   const ValueOrder& values = value_order(e.series());
   std::vector<std::size_t> order(points), next(points);
@@ -307,7 +307,7 @@ Neighbour NeighbourIndex::nearest(std::size_t i, std::size_t theiler) const {
 // Queries keyed by where their own vector sits in the tree (after every indexed vector if it
 // is not indexed): successive searches then walk the same cells while they are in cache. On
 // 1e5 samples of white noise in dimension 7 that made the divergence curve's searches ~1.4x
-// faster (docs/performance.md "Analysis (second round)").
+// faster (docs/notes/performance.md, "Neighbour search").
 std::vector<std::size_t> NeighbourIndex::search_order(std::span<const std::size_t> queries) const {
   const std::vector<std::size_t> group = impl_->groups.group_of_vectors();
   const std::vector<std::size_t> rank = impl_->tree.storage_rank();

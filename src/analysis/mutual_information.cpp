@@ -9,7 +9,7 @@ namespace {
 
 // Pairs are counted into this many histograms in turn: a record at rest puts thousands of
 // successive pairs into one cell, and a single histogram then waits for each increment to
-// reach memory before the next (docs/performance.md "Analysis (fourth round)").
+// reach memory before the next (docs/notes/performance.md, "Mutual information").
 constexpr std::size_t kCopies = 4;
 
 // Equiprobable bin of every sample: its rank scaled to [0, bins).

@@ -213,7 +213,7 @@ void refuse_time_like_first_column(const std::vector<double>& first, const Layou
 
 // The file's bytes in one string of its size, read at once: a string stream grows by
 // doubling and is copied out, and the fresh pages of every copy cost as much as parsing
-// (docs/performance.md "Analysis (fourth round)"). Anything but a regular file (a pipe; a
+// (docs/notes/performance.md, "Reading a record at once"). Anything but a regular file (a pipe; a
 // directory, whose "size" can be anything) is read to its end in chunks.
 std::string whole_file(const std::string& path, std::ifstream& in) {
   std::error_code ec;

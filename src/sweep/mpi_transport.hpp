@@ -2,7 +2,7 @@
 // The few MPI calls a distributed sweep makes, behind a C interface so that the MPI library
 // lives in a module the sweep opens (dlopen) only when the process was started by an MPI
 // launcher. A program that never distributes a sweep then does not load Open MPI and its
-// dependencies at start-up (docs/performance.md, "Analysis (third round)").
+// dependencies at start-up (docs/notes/performance.md, "Start-up").
 
 extern "C" {
 

@@ -63,7 +63,7 @@ struct FrictionParams {
   /// elements are taken on their quasi-static limit (docs/model.md, "Friction"); 0: never.
   /// Off unless set: at thresholds the chaotic point reaches, the limit moves it beyond its
   /// integration error; the default scenario sets one that only fast sliding reaches
-  /// (docs/performance.md, "Simulation (fourth round: the GMS seal)").
+  /// (docs/notes/performance.md, "The GMS seal's quasi-static limit").
   double gms_quasi_static_rate_per_s = 0.0;
   /// The threshold of this model's quasi-static limit (0: none).
   [[nodiscard]] double quasi_static_threshold() const {
@@ -73,7 +73,7 @@ struct FrictionParams {
   /// The fraction of that threshold at which the limit is left again (hysteresis). GMS leaves
   /// earlier than LuGre: its first-order lag is poorest where the contact decelerates through
   /// the Stribeck drop, and leaving at 3/4 keeps the start-up's dip at fast sliding in the
-  /// full law (docs/performance.md, "Simulation (fourth round: the GMS seal)").
+  /// full law (docs/notes/performance.md, "The GMS seal's quasi-static limit").
   [[nodiscard]] double quasi_static_exit_fraction() const {
     return kind == FrictionKind::kGms ? 0.75 : 0.5;
   }

@@ -13,9 +13,9 @@
 
 namespace pneumachaos {
 
-/// How dopri5's step size follows its error estimate (docs/performance.md, "Simulation
-/// (second round)": the PI controller takes 7 % fewer evaluations on the default rig but
-/// changed a claim of `reproduce --quick`, so it is not the default).
+/// How dopri5's step size follows its error estimate (docs/notes/performance.md, "Step-size
+/// control": the PI controller takes 7 % fewer evaluations on the default rig but changed a
+/// claim of `reproduce --quick`, so it is not the default).
 enum class StepControl {
   kOdeint,  ///< Boost.Odeint's default: grows only below half the tolerance, shrinks as err^-1/3
   kPI,      ///< Hairer's DOPRI5 controller: err^-0.17 * err_prev^0.04, no growth after a rejection
