@@ -120,8 +120,10 @@ TEST_P(JacobianTest, AnalyticMatchesFiniteDifferences) {
   EXPECT_LT(reduced_derivative(plant, e, y).cwiseAbs().maxCoeff(), 1e-3);  // steady
   // A GMS element slides steadily at the kink of its law (z = r, docs/stability.md): the
   // Jacobian is that of the loading side (z <= r), reached from v > 0 by a smaller v or z.
-  const bool gms = std::find(GetParam().begin(), GetParam().end(), "friction.model=gms") !=
-                   GetParam().end();
+  // The same for a GMS guide.
+  const bool gms = std::any_of(GetParam().begin(), GetParam().end(), [](const std::string& k) {
+    return k.ends_with("friction.model=gms");
+  });
   for (Eigen::Index j = 0; j < y.size(); ++j) {
     // Step ~ cube root of epsilon relative to the state's magnitude.
     const double h = 6e-6 * std::max(std::abs(y[j]), j == 0 ? 1e-3 : 1e-6);
@@ -148,7 +150,13 @@ INSTANTIATE_TEST_SUITE_P(
                       std::vector<std::string>{"load.coupling=spring", "friction.model=gms",
                                                "friction.gms_elements=4",
                                                "friction.gms_stiffness_N_per_m=1e6",
-                                               "guide_friction.model=lugre"}));
+                                               "guide_friction.model=lugre"},
+                      // Every optional block of the Plant's state (test_linearization_blocks.cpp).
+                      std::vector<std::string>{"valve.S1_opening=lag", "supply_line.volume_cm3=50",
+                                               "thermal.chamber_model=energy"},
+                      std::vector<std::string>{"load.coupling=spring", "friction.model=lugre",
+                                               "guide_friction.model=gms",
+                                               "guide_friction.gms_elements=3"}));
 
 TEST(Stability, ClassicFrictionIsDampedByBothAnalyses) {
   const Plant plant(scenario({"friction.model=classic"}));

@@ -119,38 +119,9 @@ bool simulate_one(const Plant& plant, const Scenario& scenario, const Prepared& 
                   double* P1, double* P2, double* v, std::string* why, std::size_t base = 0) {
   const StateLayout& L = plant.layout();
   const double stroke = plant.geometry().stroke_m;
-  const double Pa = plant.ambient_pressure_Pa();
-  std::vector<double> state(L.size, 0.0);
+  // Segments start after the valve switched, from the record's own motion.
   const double x0 = plant.geometry().volumes_frozen() ? seg.x : std::clamp(seg.x, 0.0, stroke * (1 - 1e-9));
-  state[L.x] = x0;
-  state[L.v] = seg.v;
-  state[L.P1] = P1_0;
-  state[L.P2] = P2_0;
-  if (L.has_temperatures()) state[L.T1] = state[L.T2] = scenario.temperature_K;
-  if (L.has_supply_line()) state[L.P0] = plant.supply_pressure_Pa();
-  if (L.has_valve_opening()) state[L.S1_open] = 1.0;  // segments start after the switch
-  if (L.has_load_body()) {
-    // The load rides with the piston, its spring deflected by what holds it back: the guide's
-    // steady friction at this velocity (none at rest) and the external force.
-    double F_guide = 0.0;
-    if (seg.v != 0.0 && plant.guide_friction()) {
-      F_guide = plant.guide_friction()->steady_force_N(FrictionInput{seg.v, 0.0, x0});
-    }
-    state[L.load_x] = x0 - (F_guide + plant.load().external_force_N) /
-                               plant.load().coupling_stiffness_N_per_m;
-    state[L.load_v] = seg.v;
-  }
-  const auto init_z = [&](const FrictionModel& f, std::size_t z0, std::size_t nz, double gauge) {
-    if (nz == 0) return;
-    std::span<double> z(state.data() + z0, nz);
-    if (seg.v == 0.0) {
-      f.rest_state(z);
-    } else {
-      f.steady_state(FrictionInput{seg.v, gauge, x0}, z);
-    }
-  };
-  init_z(plant.seal_friction(), L.seal_z, L.seal_z_count, P1_0 + P2_0 - 2 * Pa);
-  if (plant.guide_friction()) init_z(*plant.guide_friction(), L.guide_z, L.guide_z_count, 0.0);
+  std::vector<double> state = plant.state_at({x0, seg.v, P1_0, P2_0});
 
   // The scenario's run settings (stepper, step bound, step budget) with the fit's tolerances,
   // as every simulation builds them (integrator_options).

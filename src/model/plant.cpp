@@ -64,16 +64,16 @@ Plant::Plant(const Scenario& scenario)
   valve2_.emplace(scenario.valve, scenario.gas, scenario.circuit.S2(), scenario.temperature_K);
   if (scenario.valve_opening.lagged()) {
     valve1_time_constant_s_ = scenario.valve_opening.time_constant_s;
-    layout_.S1_open = layout_.append("S1_open", "-");
+    layout_.S1_open = layout_.append("S1_open", "-", 1e-2, StateBlock::kValveOpening);
   }
   if (scenario.supply_line.enabled()) {
     line_.emplace(scenario.supply_line, scenario.valve, scenario.gas, supply_Pa_,
                   scenario.temperature_K);
-    layout_.P0 = layout_.append("P0", "Pa");
+    layout_.P0 = layout_.append("P0", "Pa", 1e4, StateBlock::kSupplyLine);
   }
   if (thermal_.chamber_model == ChamberModel::kEnergy) {
-    layout_.T1 = layout_.append("T1", "K");
-    layout_.T2 = layout_.append("T2", "K");
+    layout_.T1 = layout_.append("T1", "K", 1.0, StateBlock::kTemperatures);
+    layout_.T2 = layout_.append("T2", "K", 1.0, StateBlock::kTemperatures);
   }
   // The bore's texture is tabulated over the stroke and a margin either side (the guide's
   // load follows the piston through the mount); beyond it the sines are evaluated.
@@ -84,36 +84,24 @@ Plant::Plant(const Scenario& scenario)
   seal_ = make_friction_model(tabulated(scenario.friction));
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
-    layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), layout_.seal_z_count);
+    layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), seal_->state_scale(),
+                                    StateBlock::kSealFriction, layout_.seal_z_count);
   }
   const bool spring = load_.coupling == LoadCoupling::kSpring;
   piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
   if (spring) {
     contacts_ = 2;
     guide_ = make_friction_model(tabulated(load_.guide_friction));
-    layout_.load_x = layout_.append("x_load", "m");
-    layout_.load_v = layout_.append("v_load", "m/s");
+    layout_.load_x = layout_.append("x_load", "m", 1e-3, StateBlock::kLoadBody);
+    layout_.load_v = layout_.append("v_load", "m/s", 1e-2, StateBlock::kLoadBody);
     if (guide_->state_count() > 0) {
       layout_.guide_z_count = guide_->state_count();
-      layout_.guide_z = layout_.append(std::string(guide_->state_name()) + "_guide",
-                                       guide_->state_unit(), layout_.guide_z_count);
+      layout_.guide_z =
+          layout_.append(std::string(guide_->state_name()) + "_guide", guide_->state_unit(),
+                         guide_->state_scale(), StateBlock::kGuideFriction, layout_.guide_z_count);
     }
   }
-}
-
-std::vector<double> Plant::initial_state() const {
-  std::vector<double> x(layout_.size, 0.0);
-  x[layout_.P1] = ambient_Pa_;
-  x[layout_.P2] = supply_Pa_;
-  if (layout_.has_temperatures()) x[layout_.T1] = x[layout_.T2] = T_supply_;
-  if (layout_.has_supply_line()) x[layout_.P0] = supply_Pa_;  // charged while S1 was shut
-  if (layout_.has_valve_opening()) x[layout_.S1_open] = 0.0;  // S1 starts to open at t = 0
-  // The seal (and guide) rested before the valve switched.
-  if (layout_.seal_z_count > 0)
-    seal_->rest_state(std::span<double>(x).subspan(layout_.seal_z, layout_.seal_z_count));
-  if (layout_.guide_z_count > 0)
-    guide_->rest_state(std::span<double>(x).subspan(layout_.guide_z, layout_.guide_z_count));
-  return x;
+  channels_ = build_channels();
 }
 
 std::array<double, 2> Plant::mass_flows(double P1_Pa, double P2_Pa) const {
@@ -337,24 +325,6 @@ EventOutcome Plant::apply_event(std::size_t which, Mode& mode, std::span<double>
       break;
   }
   return out;
-}
-
-std::vector<double> Plant::state_scales() const {
-  std::vector<double> s(layout_.size, 1e-6);  // friction internal states: bristle deflections
-  const auto& L = layout_;
-  s[L.x] = 1e-3;
-  s[L.v] = 1e-2;
-  s[L.P1] = s[L.P2] = 1e4;
-  if (L.has_supply_line()) s[L.P0] = 1e4;
-  if (L.has_valve_opening()) s[L.S1_open] = 1e-2;
-  if (L.has_temperatures()) s[L.T1] = s[L.T2] = 1.0;  // 1 K
-  for (std::size_t i = 0; i < L.seal_z_count; ++i) s[L.seal_z + i] = seal_->state_scale();
-  for (std::size_t i = 0; i < L.guide_z_count; ++i) s[L.guide_z + i] = guide_->state_scale();
-  if (L.has_load_body()) {
-    s[L.load_x] = 1e-3;
-    s[L.load_v] = 1e-2;
-  }
-  return s;
 }
 
 Mode Plant::sliding_mode(int direction) const {

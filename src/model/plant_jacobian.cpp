@@ -15,8 +15,9 @@ namespace pneumachaos {
 namespace {
 
 // Derivative vectors live on the stack up to this many states (4 + friction states + a
-// second body with its friction states), so the Jacobian allocates nothing per call.
-constexpr int kMaxStates = 12;
+// second body with its friction states + every optional block: 4 + 8 + 2 + 8 + 4), so the
+// Jacobian allocates nothing per call.
+constexpr int kMaxStates = 24;
 using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
 using Dual = Eigen::AutoDiffScalar<Gradient>;
 

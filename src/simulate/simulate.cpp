@@ -33,45 +33,10 @@ SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_s
   io.validate();
   SimulationResult result{TimeSeries(run.sample_rate_Hz), {}};
   TimeSeries& ts = result.series;
-  const StateLayout& L = plant.layout();
-  ts.add_channel("x", "m");
-  ts.add_channel("v", "m/s");
-  ts.add_channel("P1", "Pa");
-  ts.add_channel("P2", "Pa");
-  ts.add_channel("F_friction", "N");
-  for (std::size_t i = 0; i < L.seal_z_count; ++i) {
-    ts.add_channel(L.entries[L.seal_z + i].name, L.entries[L.seal_z + i].unit);
-  }
-  if (L.has_load_body()) {
-    ts.add_channel("x_load", "m");
-    ts.add_channel("v_load", "m/s");
-    ts.add_channel("F_guide", "N");
-    for (std::size_t i = 0; i < L.guide_z_count; ++i) {
-      ts.add_channel(L.entries[L.guide_z + i].name, L.entries[L.guide_z + i].unit);
-    }
-  }
-  if (L.has_temperatures()) {
-    ts.add_channel("T1", "K");
-    ts.add_channel("T2", "K");
-  }
-  if (L.has_supply_line()) ts.add_channel("P0", "Pa");
-  if (L.has_valve_opening()) ts.add_channel("S1_open", "-");
-  ts.add_channel("stuck", "-");
-
+  for (const OutputChannel& c : plant.channels()) ts.add_channel(c.name, c.unit);
   std::vector<double> row;
   const auto observer = [&](double /*t*/, std::span<const double> x, const Mode& mode) {
-    const PlantOutputs out = plant.outputs(mode, x);
-    row.clear();
-    row.insert(row.end(), {x[L.x], x[L.v], x[L.P1], x[L.P2], out.seal_friction_N});
-    for (std::size_t i = 0; i < L.seal_z_count; ++i) row.push_back(x[L.seal_z + i]);
-    if (L.has_load_body()) {
-      row.insert(row.end(), {x[L.load_x], x[L.load_v], out.guide_friction_N});
-      for (std::size_t i = 0; i < L.guide_z_count; ++i) row.push_back(x[L.guide_z + i]);
-    }
-    if (L.has_temperatures()) row.insert(row.end(), {x[L.T1], x[L.T2]});
-    if (L.has_supply_line()) row.push_back(x[L.P0]);
-    if (L.has_valve_opening()) row.push_back(x[L.S1_open]);
-    row.push_back(out.piston_stuck ? 1.0 : 0.0);
+    plant.sample(mode, x, row);
     ts.append(row);
   };
   Mode mode = plant.initial_mode(initial_state, 0.0);

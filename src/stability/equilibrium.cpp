@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
+#include <Eigen/Dense>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <string>
@@ -49,12 +51,9 @@ class SteadyMotion {
         L_(plant.layout()),
         mode_(plant.sliding_mode(+1)),
         x0_(position_m),
-        state_(plant.initial_state()),
-        rates_(state_.size()) {
-    state_[L_.x] = x0_;
-    if (L_.has_load_body()) state_[L_.load_x] = x0_;
-    if (L_.has_valve_opening()) state_[L_.S1_open] = 1.0;  // steady motion: S1 fully open
-  }
+        state_(plant.state_at({position_m, 0.0, plant.ambient_pressure_Pa(),
+                               plant.ambient_pressure_Pa()})),
+        rates_(state_.size()) {}
 
   // Speed at which chamber 2's outflow through S2 balances its shrinking volume, eq. (3) = 0.
   // Eq. (3) is affine in v, so two evaluations give the root exactly.
@@ -87,6 +86,36 @@ class SteadyMotion {
     if (L_.has_load_body()) settle_load();
   }
 
+  // With a supply line or the energy equation, the search holds P0 at Ps and the chambers at
+  // the supply temperature; the steady motion has its own values of those, and of everything
+  // they move. Newton's method finds them on the smooth states (v, both pressures, P0, T1,
+  // T2), the friction internal states and the load kept on their steady values at each
+  // iterate (a GMS element's law has a kink there). False when it does not converge.
+  bool refine() {
+    const std::vector<std::size_t> u = smooth_states();
+    if (u.size() == 3) return true;  // nothing held fixed
+    constexpr int kIterations = 30;
+    constexpr double kConverged = 1e-10;  // the step against each state's typical magnitude
+    for (int it = 0; it < kIterations; ++it) {
+      const Eigen::VectorXd f = smooth_rates(u);
+      Eigen::MatrixXd J(f.size(), f.size());
+      for (Eigen::Index j = 0; j < J.cols(); ++j) J.col(j) = smooth_column(u, j, f);
+      const Eigen::VectorXd step = J.colPivHouseholderQr().solve(-f);
+      if (!step.allFinite()) return false;
+      double largest = 0.0;
+      for (Eigen::Index k = 0; k < step.size(); ++k) {
+        const std::size_t i = u[static_cast<std::size_t>(k)];
+        state_[i] += step[k];
+        largest = std::max(largest, std::abs(step[k]) / L_.entries[i].scale);
+      }
+      if (largest < kConverged) {
+        smooth_rates(u);  // the friction states and the load on the last iterate's
+        return true;
+      }
+    }
+    return false;
+  }
+
   // Net force on the piston, eq. (1) times its mass: the residual of the search.
   [[nodiscard]] double net_force_N() { return plant_.piston_mass_kg() * rate(L_.v); }
 
@@ -97,23 +126,9 @@ class SteadyMotion {
   [[nodiscard]] double position_m() const { return x0_; }
 
  private:
-  // Sets v, P1 and P2, and the friction internal states at their steady values.
-  void place(double v, double P1, double P2) {
-    state_[L_.v] = v;
-    state_[L_.P1] = P1;
-    state_[L_.P2] = P2;
-    if (L_.seal_z_count > 0) {
-      plant_.seal_friction().steady_state(
-          {v, P1 + P2 - 2.0 * plant_.ambient_pressure_Pa(), x0_},
-          std::span<double>(state_).subspan(L_.seal_z, L_.seal_z_count));
-    }
-    if (!L_.has_load_body()) return;
-    state_[L_.load_v] = v;
-    if (L_.guide_z_count > 0) {
-      plant_.guide_friction()->steady_state(
-          {v, 0.0, x0_}, std::span<double>(state_).subspan(L_.guide_z, L_.guide_z_count));
-    }
-  }
+  // Sets v, P1 and P2, and every other state consistent with them (friction internal states
+  // on their steady values).
+  void place(double v, double P1, double P2) { state_ = plant_.state_at({x0_, v, P1, P2}); }
 
   // The spring deflection at which the load's own equation of motion balances (the spring
   // carries the guide's friction and the external force). The load's acceleration is affine
@@ -125,6 +140,40 @@ class SteadyMotion {
     state_[L_.load_x] = x0_ - kProbe_m;
     const double probed = rate(L_.load_v);
     state_[L_.load_x] = x0_ - kProbe_m * undeflected / (undeflected - probed);
+  }
+
+  // v, P1, P2 and the states the search holds fixed.
+  [[nodiscard]] std::vector<std::size_t> smooth_states() const {
+    std::vector<std::size_t> u{L_.v, L_.P1, L_.P2};
+    if (L_.has_supply_line()) u.push_back(L_.P0);
+    if (L_.has_temperatures()) u.insert(u.end(), {L_.T1, L_.T2});
+    return u;
+  }
+
+  // Their rates, with the friction states and the load put on their steady values first.
+  Eigen::VectorXd smooth_rates(const std::vector<std::size_t>& u) {
+    std::vector<double> held(u.size());
+    for (std::size_t k = 0; k < u.size(); ++k) held[k] = state_[u[k]];
+    place(held[0], held[1], held[2]);
+    for (std::size_t k = 3; k < u.size(); ++k) state_[u[k]] = held[k];
+    if (L_.has_load_body()) settle_load();
+    plant_.derivative(mode_, state_, rates_, 0.0);
+    Eigen::VectorXd f(static_cast<Eigen::Index>(u.size()));
+    for (std::size_t k = 0; k < u.size(); ++k) f[static_cast<Eigen::Index>(k)] = rates_[u[k]];
+    return f;
+  }
+
+  // Column j of their Jacobian by a forward difference (the states are smooth functions here).
+  Eigen::VectorXd smooth_column(const std::vector<std::size_t>& u, Eigen::Index j,
+                                const Eigen::VectorXd& f) {
+    const std::size_t i = u[static_cast<std::size_t>(j)];
+    const double base = state_[i];
+    const double h = 1e-7 * std::max(std::abs(base), L_.entries[i].scale);
+    state_[i] = base + h;
+    Eigen::VectorXd column = (smooth_rates(u) - f) / h;
+    state_[i] = base;
+    smooth_rates(u);
+    return column;
   }
 
   double rate(std::size_t i) {
@@ -165,11 +214,12 @@ std::vector<double> scanned_overpressures(const Plant& plant, int n) {
   return dP;
 }
 
-Equilibrium equilibrium_at(const Plant& plant, SteadyMotion& motion, double P2) {
+std::optional<Equilibrium> equilibrium_at(const Plant& plant, SteadyMotion& motion, double P2) {
   motion.place_at(P2);
+  if (!motion.refine()) return std::nullopt;
   const SteadyFriction fr = steady_friction(plant, motion.v(), motion.P1(), motion.P2());
-  return {motion.v(), motion.P1(),       motion.P2(),   motion.position_m(),
-          fr.force_N, fr.slope_Ns_per_m, motion.state()};
+  return Equilibrium{motion.v(), motion.P1(),       motion.P2(),   motion.position_m(),
+                     fr.force_N, fr.slope_Ns_per_m, motion.state()};
 }
 
 // Why the scan found no sign change, judged at its lowest rod-side pressure.
@@ -219,15 +269,24 @@ EquilibriumResult find_equilibria(const Plant& plant, const EquilibriumOptions& 
   double f_prev = residual(Pa + dP.front());
   const double f_first = f_prev;
   SteadyMotion creeping = motion;
+  bool unrefined = false;
   for (std::size_t i = 1; i < dP.size(); ++i) {
     const double f = residual(Pa + dP[i]);
     if ((f_prev > 0.0) != (f > 0.0)) {
       const double P2 = root(residual, Pa + dP[i - 1], Pa + dP[i]);
-      result.equilibria.push_back(equilibrium_at(plant, motion, P2));
+      if (auto eq = equilibrium_at(plant, motion, P2)) {
+        result.equilibria.push_back(std::move(*eq));
+      } else {
+        unrefined = true;
+      }
     }
     f_prev = f;
   }
-  if (result.equilibria.empty()) result.reason = no_equilibrium_reason(plant, creeping, f_first);
+  if (result.equilibria.empty()) {
+    result.reason = unrefined ? "the force balance has a root, but the supply line's pressure or "
+                                "the chamber temperatures found no steady value beside it"
+                              : no_equilibrium_reason(plant, creeping, f_first);
+  }
   return result;
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "pneumachaos/core/hybrid_system.hpp"
@@ -45,6 +46,24 @@ struct PlantOutputs {
   bool piston_stuck = false;      ///< stuck or held at the stop
 };
 
+/// Where a motion is at one moment, as a user or a record states it: the rest of the state
+/// (friction internal states, load body, temperatures, supply line, valve) follows from it.
+struct OperatingPoint {
+  double position_m = 0.0;
+  double velocity_m_per_s = 0.0;
+  double P1_Pa = 0.0;  ///< absolute
+  double P2_Pa = 0.0;  ///< absolute
+};
+
+/// One sampled output column: a state, or a force or flag derived from the state.
+struct OutputChannel {
+  enum class Source : std::uint8_t { kState, kSealFriction, kGuideFriction, kStuck };
+  std::string name;
+  std::string unit;
+  Source source = Source::kState;
+  std::size_t state = 0;  ///< the state's index (Source::kState)
+};
+
 class Plant final : public HybridSystem {
  public:
   /// Validates the scenario (throws Error naming the key) and builds the plant.
@@ -66,6 +85,14 @@ class Plant final : public HybridSystem {
 
   /// The start of a run (docs/model.md): chamber 1 at Pa, chamber 2 at Ps, at rest at x = 0.
   [[nodiscard]] std::vector<double> initial_state() const;
+  /// A full state at `op`, every block consistent with it: friction internal states at rest
+  /// (v = 0) or on their steady state, the load riding with the piston on a spring deflected by
+  /// what holds it back, the chambers at supply temperature, the supply line charged, S1 open.
+  [[nodiscard]] std::vector<double> state_at(const OperatingPoint& op) const;
+  /// The sampled output columns, in order (simulate's CSV and TimeSeries).
+  [[nodiscard]] const std::vector<OutputChannel>& channels() const { return channels_; }
+  /// One sample of every channel into `row` (cleared first).
+  void sample(const Mode& mode, std::span<const double> x, std::vector<double>& row) const;
   [[nodiscard]] PlantOutputs outputs(const Mode& mode, std::span<const double> x) const;
 
   /// Typical magnitudes of the state variables (1 mm, 10 mm/s, 10 kPa, 1 um of bristle),
@@ -179,6 +206,12 @@ class Plant final : public HybridSystem {
   /// The contact's friction force in the limit, lag included: drive - mass dv/dt.
   [[nodiscard]] double limit_force(std::size_t contact, const Mode& mode,
                                    std::span<const double> x) const;
+  /// The output columns: piston and chambers, each contact's friction force beside its
+  /// internal states, then the optional blocks, then the stuck flag.
+  [[nodiscard]] std::vector<OutputChannel> build_channels() const;
+  /// A friction model's internal states at rest (v = 0) or on their steady state at `in`.
+  static void settle_internal_states(const FrictionModel& f, const FrictionInput& in,
+                                     std::span<double> z);
   [[nodiscard]] const FrictionModel& friction_of(std::size_t contact) const {
     return contact == 0 ? *seal_ : *guide_;
   }
@@ -205,6 +238,7 @@ class Plant final : public HybridSystem {
   double A2_ = 0.0;
   double piston_mass_ = 0.0;
   std::size_t contacts_ = 1;
+  std::vector<OutputChannel> channels_;
 };
 
 }  // namespace pneumachaos

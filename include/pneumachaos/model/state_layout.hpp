@@ -1,12 +1,27 @@
 #pragma once
-// Where each quantity sits in the ODE state vector. Options append blocks (friction internal
-// states, a second body for the load on its own guide) so that new states never fork the model.
+// Where each quantity sits in the ODE state vector. The Plant declares its state here once, as
+// named blocks (docs/architecture.md, "Adding a state"): each entry carries its name, unit,
+// typical magnitude and block, so that output channels, norms, the equilibrium and the
+// linearization reach every state through this table and never by position.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace pneumachaos {
+
+/// The kinds of state the Plant can hold; a scenario's options decide which are present.
+enum class StateBlock : std::uint8_t {
+  kPiston,          ///< x, v
+  kChambers,        ///< P1, P2
+  kValveOpening,    ///< S1's opening fraction (valve.S1_opening = lag)
+  kSupplyLine,      ///< the supply line's pressure P0 (supply_line.volume_cm3 > 0)
+  kTemperatures,    ///< T1, T2 (thermal.chamber_model = energy)
+  kSealFriction,    ///< the seal friction model's internal states
+  kLoadBody,        ///< x_load, v_load (load.coupling = spring)
+  kGuideFriction,   ///< the load guide friction model's internal states
+};
 
 struct StateLayout {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
@@ -30,11 +45,18 @@ struct StateLayout {
   struct Entry {
     std::string name;
     std::string unit;
+    double scale = 1.0;  ///< typical magnitude, for norms that weigh states alike
+    StateBlock block = StateBlock::kPiston;
   };
-  std::vector<Entry> entries{{"x", "m"}, {"v", "m/s"}, {"P1", "Pa"}, {"P2", "Pa"}};
+  std::vector<Entry> entries{{"x", "m", 1e-3, StateBlock::kPiston},
+                             {"v", "m/s", 1e-2, StateBlock::kPiston},
+                             {"P1", "Pa", 1e4, StateBlock::kChambers},
+                             {"P2", "Pa", 1e4, StateBlock::kChambers}};
 
   /// Appends `count` states named name, name2, ...; returns the index of the first.
-  std::size_t append(const std::string& name, const std::string& unit, std::size_t count = 1);
+  std::size_t append(const std::string& name, const std::string& unit, double scale,
+                     StateBlock block, std::size_t count = 1);
+  [[nodiscard]] bool has(StateBlock block) const;
   [[nodiscard]] bool has_load_body() const { return load_x != kNone; }
   [[nodiscard]] bool has_temperatures() const { return T1 != kNone; }
   [[nodiscard]] bool has_supply_line() const { return P0 != kNone; }
