@@ -9,7 +9,7 @@
 #     docs-src/docs/guide/run/PAGE/ (the figures the pages show are what these commands write);
 #     a command that exits non-zero fails the build, naming the page and the command;
 #   - builds the site with `mkdocs build --strict`.
-# Prints "doc-tested commands: N" at the end. Needs mkdocs and doxygen (scripts/setup.sh).
+# Prints how many of the guide's commands and Python blocks ran, at the end. Needs mkdocs and doxygen (scripts/setup.sh).
 set -uo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 build=$(realpath -m "${1:-$repo/build}")
@@ -105,11 +105,13 @@ extract() {
          if (line != "" && line !~ /^#/) print line
        }' "$1"
 }
-ran=0 failed=0
+ran=0 python_blocks=0 failed=0
 for page in "$stage"/docs/guide/*.md; do
   name=$(basename "$page" .md)
   cmds=$(extract "$page")
-  [ -z "$cmds" ] && continue
+  # The page's Python blocks, in order, as one script (the page shows the code that runs).
+  python_code=$(awk '/^```\{\.python \.run\}/ {block = 1; next} /^```/ {block = 0; next} block' "$page")
+  [ -z "$cmds" ] && [ -z "$python_code" ] && continue
   work="$stage/docs/guide/run/$name"
   mkdir -p "$work" && ln -s "$repo/docs" "$work/docs"
   while IFS= read -r cmd; do
@@ -121,11 +123,9 @@ for page in "$stage"/docs/guide/*.md; do
       tail -n 5 <<<"$out" | sed 's/^/  | /'
     fi
     [ -n "${DOCS_TIMES:-}" ] && printf '%6.1f s  %s: %s\n' "$(echo "$(date +%s.%N) - $start" | bc)" "$name" "$cmd"
-  done <<<"$cmds"
-  # The page's Python blocks, in order, as one script (the page shows the code that runs).
-  python_code=$(awk '/^```\{\.python \.run\}/ {block = 1; next} /^```/ {block = 0; next} block' "$page")
+  done < <(printf '%s' "$cmds" | grep .)
   if [ -n "$python_code" ]; then
-    ran=$((ran + $(grep -c '^```{\.python \.run}' "$page")))
+    python_blocks=$((python_blocks + $(grep -c '^```{\.python \.run}' "$page")))
     printf '%s\n' "$python_code" >"$work/$name.py"
     if ! out=$(cd "$work" && PYTHONPATH="$build/python" python3 "$name.py" 2>&1 >"$work/.stdout"); then
       failed=$((failed + 1))
@@ -147,7 +147,7 @@ for page in "$stage"/docs/guide/*.md; do
     fi
   done < <(grep -o 'data-file="[^"]*"' "$page" | sed 's/data-file="//; s/"$//')
 done
-[ "$failed" -eq 0 ] || { echo "build-docs: $failed of $ran guide command(s) failed" >&2; exit 1; }
+[ "$failed" -eq 0 ] || { echo "build-docs: $failed of $ran guide command(s) and Python pages failed" >&2; exit 1; }
 
 # --- the headers and keys this build writes, from the guide's own outputs -------------------
 {
@@ -182,5 +182,5 @@ walk(json.load(open(sys.argv[1])), [], 0)' "$path" | head -n 200
 
 # --- the site --------------------------------------------------------------------------------
 mkdocs build --strict --quiet -f "$stage/mkdocs.yml" -d "$site" || { echo "build-docs: mkdocs failed" >&2; exit 1; }
-echo "doc-tested commands: $ran"
+echo "doc-tested commands: $ran shell commands and $python_blocks Python blocks of the guide"
 echo "site: $site/index.html"
