@@ -1,7 +1,7 @@
 // Time of the whole analysis and of each Lyapunov estimator on 1e4 and 1e5 samples of the
 // Lorenz x coordinate (dt = 0.01); the ratio between the sizes shows the growth (N log N
 // would be ~11.5x for 10x the points). The previous build's figures: bench/compare_builds.sh
-// or this program built from the previous commit, run alternately (docs/performance.md).
+// or this program built from the previous commit, run alternately (docs/notes/performance.md).
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 // The neighbour index alone: building it and querying the nearest neighbour of every tenth
 // point, on 1e4 and 1e5 samples of the Lorenz x coordinate (dt = 0.01) embedded with delay
 // 17, and on 1e5 samples of white noise in dimension 7. BM_Reference* is the previous index, kept here: nanoflann's tree reading the delay
-// coordinates from the series (docs/performance.md); same neighbours, printed beside ours.
+// coordinates from the series (docs/notes/performance.md); same neighbours, printed beside ours.
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_neighbours
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 // The whole `reproduce --quick` in process (sweeps, figures, claims, report), on all cores.
 // The sweeps are removed before each iteration so none is resumed. Compare with the same
 // command of the previous build, or with `pneumachaos reproduce --quick` timed
-// (docs/performance.md).
+// (docs/notes/performance.md).
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_reproduce
 #include <benchmark/benchmark.h>
 

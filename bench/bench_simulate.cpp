@@ -2,7 +2,7 @@
 // rig (one rigid mass, Stribeck seal) sliding and in stick-slip, LuGre on both steppers, and
 // the default two-mass virtual rig, plain and as a sweep runs it (textured bore). Each prints
 // its right-hand-side evaluations and steps per run; StepControl compares the step-size
-// controllers in one process (docs/performance.md, "Simulation (second round)"), QuasiStatic
+// controllers in one process (docs/notes/performance.md, "Step-size control"), QuasiStatic
 // LuGre's full bristle equation with its quasi-static limit ("Simulation (third round)"),
 // GmsQuasiStatic the GMS seal's limit ("Simulation (fourth round: the GMS seal)").
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
@@ -94,7 +94,7 @@ void BM_VirtualRigTextured(benchmark::State& state) {
 
 // The default rig at the map's largest S2 (4.4 mm^2), sliding at ~0.8 m/s: the step is bound
 // by the stability of the guide's bristles (rate sigma0 |v| / g ~ 1.2e4 1/s), not by the
-// tolerance, and such points cost the most RHS evaluations of a sweep (docs/performance.md).
+// tolerance, and such points cost the most RHS evaluations of a sweep (docs/notes/performance.md).
 void BM_VirtualRigFastSliding(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = 4.4e-6;
@@ -119,7 +119,7 @@ void BM_VirtualRigQuasiStatic(benchmark::State& state) {
 // argument 0, the full law as the default runs it) and at a threshold of the second argument
 // in 1/s, in one process; third argument S2 in 0.01 mm^2: the fast-sliding points 3.0 and
 // 4.4 mm^2, where it is accurate, and the chaotic default 0.35 mm^2, where it is not
-// (docs/performance.md, "Simulation (fourth round: the GMS seal)").
+// (docs/notes/performance.md, "The GMS seal's quasi-static limit").
 void BM_VirtualRigGmsQuasiStatic(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = static_cast<double>(state.range(2)) * 1e-8;
@@ -131,7 +131,7 @@ void BM_VirtualRigGmsQuasiStatic(benchmark::State& state) {
 
 // The default rig integrated without output, with the default step-size controller
 // (Boost.Odeint's, first argument 0) and Hairer's PI controller (1, tried and not adopted:
-// docs/performance.md), in one process; second argument S2 in 0.01 mm^2 (the chaotic
+// docs/notes/performance.md), in one process; second argument S2 in 0.01 mm^2 (the chaotic
 // default and the stiff fast-sliding point).
 void BM_VirtualRigStepControl(benchmark::State& state) {
   Scenario s = default_scenario();

@@ -2,7 +2,7 @@
 # Times the command line of two builds on the same records, alternately (old, new, old, new),
 # and prints CPU seconds (user + sys), peak memory and the ratio old/new for each workload;
 # it also checks that both builds write the same JSON. CPU time, not wall time: the machine
-# may be shared (docs/performance.md).
+# may be shared (docs/notes/performance.md).
 # Usage: bench/compare_builds.sh OLD_BUILD_DIR NEW_BUILD_DIR [--reproduce]
 # (NEW_BUILD_DIR from `cmake --preset bench`; it provides bench/write_series.)
 set -euo pipefail

@@ -3,13 +3,13 @@
 
 Generates 43 record types (chaotic flows and maps, periodic, quasi-periodic, steady,
 linear and nonlinear stochastic, non-stationary records; none of them in the validation corpus or the held-out set of
-docs/analysis.md) at 10,000 and 5,000 samples as CSV files in DIR, then, with --cli, analyses
+docs/notes/analysis.md) at 10,000 and 5,000 samples as CSV files in DIR, then, with --cli, analyses
 each with `analyze`'s defaults (39 surrogates) and without surrogates (the sweep's setting) and
 prints the verdicts as a Markdown table. Exit status 1 when a record that is not chaotic is
 called chaotic (the verdict's one hard rule); misses of chaotic records are only printed.
 
 The expected class is the prefix of each name: C chaotic, P periodic, Q quasi-periodic,
-S steady, N stochastic (docs/analysis.md, "Blind records").
+S steady, N stochastic (docs/validation.md, the blind-records row).
 
 usage: blind_records.py DIR [--cli PATH_TO_PNEUMACHAOS]
 """

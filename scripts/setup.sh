@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libceres-dev libtbb-dev
   gnuplot-nox
+  mkdocs doxygen
   chromium
   libopenmpi-dev openmpi-bin
   clang libclang-rt-14-dev

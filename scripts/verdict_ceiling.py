@@ -9,8 +9,8 @@ each with a flag for "not measured" -- and nothing about the run's place in the 
 model exponent. It prints their 10-fold cross-validated agreement over three shuffles (the
 spread given is the shuffles'). The folds are drawn by grid point: every run at one point of
 the grid (its repeats, with and without seal variation, under every condition) is in one
-fold, so a run is never judged by its own twin (docs/analysis.md, "What a rule fitted to the
-labels could do").
+fold, so a run is never judged by its own twin (docs/notes/analysis.md, "Validation against
+the model's own exponent": what a rule fitted to the labels could do).
 
 With --transfer, the classifiers fitted to every run given first then judge the runs after
 --transfer (another rig or configuration): a boundary that holds only on the sweeps it was

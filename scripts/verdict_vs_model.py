@@ -3,17 +3,18 @@
 
 Reads the runs.csv of sweeps run with `--model-exponent` and labels each run chaotic when the
 model's exponent exceeds 3 times its uncertainty (docs/sweep.md); the record's label is the
-`chaotic` column (docs/analysis.md). Prints the confusion table per sweep and in total, as
-Markdown (docs/analysis.md, "Validation against the model").
+`chaotic` column (docs/notes/analysis.md). Prints the confusion table per sweep and in total, as
+Markdown (docs/notes/analysis.md, "Validation against the model's own exponent").
 
-Last, how often the model's exponent lies inside the record's 95 % interval (docs/analysis.md
+Last, how often the model's exponent lies inside the record's 95 % interval (docs/notes/analysis.md
 "Divergence exponent's uncertainty"): runs with a fitted divergence exponent, inside when
 |lambda_record - lambda_model| <= 1.96 x the two uncertainties in quadrature.
 
 With --relabel, the same sweeps run again with other, equally valid settings of the model's
 exponent (another renormalisation interval, another start-up discarded) follow, one group per
 setting in the same order: a run's label is settled when every setting gives it, and a second
-table counts only settled runs (docs/analysis.md, "How settled the labels are"). The record
+table counts only settled runs (docs/notes/analysis.md, "Validation against the model's own
+exponent": the labels are not settled). The record
 verdict does not depend on those settings; a run whose verdict differs between groups is an
 error (the groups are not the same sweeps).
 

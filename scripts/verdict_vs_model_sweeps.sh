@@ -6,12 +6,13 @@
 # [SCENARIO.toml]  (the scenario goes to every sweep, e.g. docs/variants/gms_candidate.toml;
 # default: the built-in scenario). --relabel runs the sweeps twice more with other settings of
 # the model's exponent (renormalised every 0.04 s; 2 s of start-up discarded) and adds the
-# table of runs whose label all three settings give (docs/analysis.md, "How settled the labels
-# are"). Each --set is passed to every sweep after the script's own, so it overrides them:
-# e.g. --set run.duration_s=40 for 40 s records, --set variation.texture_rel=0 for seal
-# variation without bore texture (docs/analysis.md, "Record length, bore texture and moving
-# volumes"). --surrogates N goes to every sweep too: the verdict with N IAAFT surrogates per
-# record (docs/analysis.md, "The sweep with surrogates").
+# table of runs whose label all three settings give (docs/notes/analysis.md, "Validation
+# against the model's own exponent"). Each --set is passed to every sweep after the script's
+# own, so it overrides them: e.g. --set run.duration_s=40 for 40 s records, --set
+# variation.texture_rel=0 for seal variation without bore texture (docs/notes/analysis.md,
+# "Validation against the model's own exponent": blind spots of a 10 s record). --surrogates N
+# goes to every sweep too: the verdict with N IAAFT surrogates per
+# record (docs/notes/analysis.md, "Surrogate-data test").
 set -eu
 cli=${PNEUMACHAOS_CLI:?set PNEUMACHAOS_CLI to the pneumachaos binary}
 relabel=0

@@ -1,5 +1,6 @@
 #pragma once
-// Series with known largest Lyapunov exponents (docs/analysis.md, "Measured"), made by
+// Series with known largest Lyapunov exponents (docs/validation.md, "The chaos analysis
+// against known answers"), made by
 // the tests themselves: the x coordinate only, transients discarded.
 
 #include <array>

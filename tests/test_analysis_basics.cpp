@@ -259,7 +259,7 @@ TEST(EmbeddingParameters, TextbookDelaysAndDimensions) {
 
 TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
   // 10 Hz at 1 kHz: a quarter period is 25 samples (a 16-bin equal-width AMI puts the
-  // minimum at ~5, docs/analysis.md).
+  // minimum at ~5, docs/notes/analysis.md).
   const auto x = sine(10000, 10.0, 1000.0, 0.05);
   const DelayChoice d = choose_delay(x);
   EXPECT_GE(d.delay, 22u);
@@ -267,8 +267,8 @@ TEST(EmbeddingParameters, NoisySineDelayIsAQuarterPeriod) {
 }
 
 // A 6.25 Hz orbit at 1 kHz (160 samples) carrying a faster mode at 0.6 of its amplitude, like
-// the rig's piston on its mount (docs/analysis.md "Orbital period"): every swing of the faster
-// mode is a maximum, so the maxima are 40 (its 4th harmonic) or 43.5 samples (23 Hz, not
+// the rig's piston on its mount (docs/notes/analysis.md "Orbital period"): every swing of the
+// faster mode is a maximum, so the maxima are 40 (its 4th harmonic) or 43.5 samples (23 Hz, not
 // locked) apart; the orbit takes 160.
 TEST(OrbitalPeriod, SeesThroughAFasterMode) {
   const auto slow = sine(10000, 6.25, 1000.0, 0.02, 3);

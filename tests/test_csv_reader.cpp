@@ -126,7 +126,7 @@ TEST(CsvReader, BadInputNamesTheLineAndColumn) {
 }
 
 
-// The reader cuts lines and fields itself (docs/performance.md "Analysis (second round)"):
+// The reader cuts lines and fields itself (docs/notes/performance.md "Reading a record at once"):
 // the cases a string stream used to decide. Expected values written out by hand.
 TEST(CsvReader, LinesAndFieldsAsAStreamWouldCutThem) {
   CsvSeriesOptions o;

@@ -50,7 +50,7 @@ TEST(Friction, PressureDependenceRaisesBothLevels) {
 
 TEST(Friction, TextureScalesBothLevelsByOneFactor) {
   // Fc and Fs share the texture factor 1 + sum a sin(k x + phi) (docs/model.md), summed once
-  // for both (docs/performance.md): the steady force must equal the law written out here
+  // for both (docs/notes/performance.md): the steady force must equal the law written out here
   // operation for operation, to the last bit.
   FrictionParams p = params(FrictionKind::kStribeck);
   p.stribeck_exponent = 1.0;

@@ -1,8 +1,8 @@
 // The GMS seal's quasi-static limit (friction.gms_quasi_static_rate, docs/model.md "Friction")
 // against the full law integrated at tight tolerances, on the default rig. The default
 // scenario turns it on at a threshold its chaotic and stick-slip points never reach: there
-// the elements' shares move too fast for it (docs/performance.md, "Simulation (fourth round:
-// the GMS seal)"); where the contact slides fast it must keep the run within the default
+// the elements' shares move too fast for it (docs/notes/performance.md, "The GMS seal's
+// quasi-static limit"); where the contact slides fast it must keep the run within the default
 // tolerances' own error and take the elements' stiffness out of the step.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Largest Lyapunov exponents from 1e4 samples of one coordinate, with DEFAULT automatic
-// parameters (docs/analysis.md, "Measured").
+// parameters (docs/validation.md, "The chaos analysis against known answers").
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -66,7 +66,8 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Divergence, ContinuousTimeAlignmentRemovesTheFlowBias) {
-  // Without alignment the Rossler estimate falls 13-18 % low, as in the peers docs/analysis.md lists.
+  // Without alignment the Rossler estimate falls 13-18 % low, as in the peers
+  // docs/notes/analysis.md lists.
   const auto x = rossler_x(10000);
   DivergenceOptions o = automatic(x);
   o.alignment = DivergenceOptions::Alignment::kOff;
@@ -139,8 +140,8 @@ WolfOptions wolf_automatic(const std::vector<double>& x) {
 
 class WolfTest : public ::testing::TestWithParam<Reference> {};
 
-// Wolf is asked to be within 15 % (docs/analysis.md). Measured on these records: logistic 0 %, Henon -7.6 %,
-// Lorenz -6.2 %, Rossler -12.7 % (docs/analysis.md).
+// Wolf is asked to be within 15 % (docs/notes/analysis.md). Measured on these records:
+// logistic 0 %, Henon -7.6 %, Lorenz -6.2 %, Rossler -12.7 % (docs/validation.md).
 TEST_P(WolfTest, WithinFifteenPercentOfTheReference) {
   const Reference& ref = GetParam();
   const auto x = ref.make();
@@ -188,7 +189,7 @@ TEST(Wolf, StrictlyPeriodicRecordMeasuresNoStretching) {
 }  // namespace
 }  // namespace pneumachaos
 
-// Honest uncertainties (issue 11 item 4, docs/analysis.md "Open"): over records of known
+// Honest uncertainties (issue 11 item 4, docs/notes/analysis.md "Open"): over records of known
 // exponent, with the analysis' own automatic parameters, the true value must lie inside the
 // reported 95 % interval (+-1.96 sigma) on at least 90 % of them (asserted for the divergence
 // exponent; Wolf's coverage is printed).
@@ -249,7 +250,7 @@ TEST(ExponentUncertainty, NinetyFiveIntervalCoversTheTrueValueOnNinetyPercent) {
              n, wolf_in, n);
   EXPECT_GE(divergence_in, 0.9 * n);
   // Wolf's is printed, not asserted: it misses Henon (-7.6 %, a bias of the method,
-  // docs/analysis.md "Open") and reads 22 of 25 here.
+  // docs/notes/analysis.md "Open") and reads 22 of 25 here.
 }
 
 }  // namespace

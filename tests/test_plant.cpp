@@ -188,8 +188,8 @@ TEST(Plant, StiffStepperRunsTheDefaultRigWithinTheTolerancesError) {
   const auto reference = simulate(plant, tight(0.5));
   ASSERT_TRUE(reference.summary.ok());
   // dopri5 at the default tolerances is 2e-6 m/s off the reference by 0.5 s here, Rosenbrock 4
-  // 7e-7 (docs/performance.md, "The simulation's floor"); 1e-5 m/s is a tenth of a transducer's
-  // resolution and far below the chaotic motion's 0.1 m/s.
+  // 7e-7 (docs/notes/performance.md, "The simulation's floor"); 1e-5 m/s is a tenth of a
+  // transducer's resolution and far below the chaotic motion's 0.1 m/s.
   EXPECT_LT(largest_velocity_difference(stiff, reference), 1e-5);
 }
 
@@ -198,7 +198,7 @@ TEST(Plant, StiffStepperRunsTheDefaultRigWithinTheTolerancesError) {
 // steady state, z - z0 ~ -(dz0/dt) / rate, a force error (sigma1 - g/|v|) dz0/dt that
 // vanishes in steady sliding. Asked of it: a velocity error below what the default relative
 // tolerance admits in one step at this speed, 1e-7 x 0.8 m/s (the full equation at the
-// default tolerances is 1e-8 m/s off the same reference here; docs/performance.md).
+// default tolerances is 1e-8 m/s off the same reference here; docs/notes/performance.md).
 Scenario without_quasi_static(Scenario s) {
   s.friction.quasi_static_rate_per_s = 0.0;
   s.load.guide_friction.quasi_static_rate_per_s = 0.0;

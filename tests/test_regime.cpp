@@ -26,8 +26,8 @@ TEST(Regime, SineSineWithNoiseAndWhiteNoiseAreNeverChaotic) {
   }
   const AnalysisResult n = analyze_series(white_noise(10000), 1000.0);
   EXPECT_FALSE(n.verdict.chaotic);
-  // Wolf's program reads white noise at ~300 /s (as docs/analysis.md notes of the peers); it is
-  // no longer run on a record whose neighbours predict no better than a linear rule.
+  // Wolf's program reads white noise at ~300 /s (as docs/notes/analysis.md notes of the
+  // peers); it is no longer run on a record whose neighbours predict no better than a linear rule.
   EXPECT_FALSE(n.wolf_run);
   EXPECT_NE(n.wolf_status.find("not run: no deterministic structure"), std::string::npos);
   EXPECT_GE(n.prediction.ratio(), 1.0);
@@ -44,7 +44,7 @@ TEST(Regime, ChaoticReferencesAreChaotic) {
 
 TEST(Regime, PhaseCoherentChaosIsChaotic) {
   // Rossler's autocorrelation barely decays within the record; it no longer vetoes: the
-  // exponent, the 0-1 test and the prediction errors decide (docs/analysis.md).
+  // exponent, the 0-1 test and the prediction errors decide (docs/notes/analysis.md).
   const AnalysisResult r = analyze_series(rossler_x(10000), 10.0);
   EXPECT_TRUE(r.verdict.chaotic);
   EXPECT_EQ(r.verdict.regime, Regime::kChaotic);
@@ -103,8 +103,8 @@ std::vector<double> slips(std::size_t n, SlipSize slip_size) {
 
 TEST(Regime, PeriodTwoStickSlipIsNotChaotic) {
   // Slips alternate between two sizes: periodic stick-slip, period two cycles. Any evidence of
-  // chaos between rests must leave it alone (docs/analysis.md "Tried and not adopted: chaos
-  // between rests from the 0-1 test").
+  // chaos between rests must leave it alone (docs/notes/analysis.md "Tried and not adopted":
+  // chaos between rests from the 0-1 test).
   for (std::size_t n : {5000, 10000}) {
     const auto v = slips(n, [](std::size_t k) { return k % 2 == 0 ? 0.2 : 0.9; });
     const AnalysisResult r = analyze_series(v, 1000.0);

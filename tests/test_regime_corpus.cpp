@@ -1,7 +1,7 @@
 // The verdict on the validation corpus (tests/validation_corpus.hpp), default parameters:
 // every record's expected regime comes from its source (a published chaotic system, a
 // periodic window, a torus by construction, a linear stochastic process). The confusion
-// matrix it prints is the one in docs/analysis.md.
+// matrix it prints is the one in docs/notes/analysis.md.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -32,7 +32,7 @@ std::string evidence_row(const CorpusRecord& c, std::size_t n, const AnalysisRes
 }
 
 // Records the verdict does not get right yet, with the honest fallback it must give instead
-// (docs/analysis.md "Confusion matrix"): 5,000 samples of the oversampled Lorenz are 25 time
+// (docs/validation.md, the corpus row): 5,000 samples of the oversampled Lorenz are 25 time
 // units, too short for the divergence curve's linear region.
 Regime allowed_instead(const CorpusRecord& c, std::size_t n) {
   if (c.name == "lorenz oversampled" && n == 5000) return Regime::kUndetermined;

@@ -1,4 +1,4 @@
-// Held-out records for the verdict (docs/analysis.md "Held-out records"): systems and settings
+// Held-out records for the verdict (docs/validation.md, the held-out row): systems and settings
 // that are not in the validation corpus. Prints every verdict (the table in the docs) and
 // asserts what must hold whatever the remaining misses: no regular or stochastic record is
 // called chaotic, and the short Lorenz record is undetermined. About 30 s: label `long`.

@@ -1,7 +1,7 @@
-// The self-repetition veto (docs/analysis.md "Regime verdict"): a record that repeats itself at
-// one lag over most of its length has no exponential divergence. Known answers: a modulated
-// tone repeats at the common period of carrier and modulation; published chaotic systems never
-// repeat; an imposed exponential growth of the mismatch is measured at its rate.
+// The self-repetition veto (docs/notes/analysis.md "Self-repetition veto"): a record that repeats
+// itself at one lag over most of its length has no exponential divergence. Known answers: a
+// modulated tone repeats at the common period of carrier and modulation; published chaotic systems
+// never repeat; an imposed exponential growth of the mismatch is measured at its rate.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -23,7 +23,7 @@ Scenario scenario(const std::vector<std::string>& sets) {
   return s;
 }
 
-// A Stribeck drop 40 mm/s wide (exponent 1), as in docs/virtual_rig.md: its negative slope
+// A Stribeck drop 40 mm/s wide (exponent 1), as in docs/notes/virtual_rig.md: its negative slope
 // reaches the paper's operating speeds, so the map holds both verdicts.
 const std::vector<std::string> kWideStribeck{"friction.vs_mm_per_s=40",
                                              "friction.stribeck_exponent=1"};

@@ -146,7 +146,7 @@ TEST(Evidence, TooShortForTheTestsSaysSoAndDegradesWithoutNaN) {
 // A linear process beats all 39 surrogates in one record of 40 by chance (the test's level),
 // and a noise-driven nonlinear oscillator beats them always; both are forecast about as well
 // by the linear predictor as by the local-constant one, so the surrogate rejection alone must
-// not make them deterministic (the blind records of docs/analysis.md: a noise-driven linear
+// not make them deterministic (the blind records of docs/notes/analysis.md: a noise-driven linear
 // oscillator at 5,000 samples and van der Pol with dynamic noise were called chaotic).
 TEST(Verdict, SurrogateRejectionAloneDoesNotMakeALinearRecordChaotic) {
   RegimeEvidence e;

@@ -300,7 +300,7 @@ TEST(Sweep, TheRecordsCsvFormIsUnchanged) {
 }
 
 // The sweep's model exponent of a run is `lyapunov`'s on the same settings, bit for bit: at
-// the frozen chaotic point (docs/virtual_rig.md: 4.07 +- 0.36 1/s over 60 s) beyond 3 sigma,
+// the frozen chaotic point (docs/notes/virtual_rig.md: 4.07 +- 0.36 1/s over 60 s) beyond 3 sigma,
 // at the stick-slip point S2 = 0.05 mm^2 not.
 // One run per point, with the model's exponent.
 SweepSpec model_exponent_spec(const std::vector<std::string>& sets, const std::string& grid,

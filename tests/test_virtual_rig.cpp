@@ -1,4 +1,4 @@
-// The virtual rig's acceptance (docs/virtual_rig.md holds the evidence around these numbers).
+// The virtual rig's acceptance (docs/notes/virtual_rig.md holds the evidence around these numbers).
 // Issue 5's, on the rig it was built for (volumes frozen at 420 mm, 0.53 kg, LuGre seal:
 // docs/variants/frozen_light_piston.toml), so that a later change cannot silently lose that
 // mechanism; issue 12's, pinned on the DEFAULT (volumes following the piston over 500 mm).
@@ -46,8 +46,9 @@ TEST(VirtualRig, DefaultRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel)
   EXPECT_GT(sim.summary.t_final_s, 6.5);
   EXPECT_LT(sim.summary.t_final_s, 8.5);
   // The record's verdict says what the model's own exponent over the same stroke says (the
-  // label of docs/analysis.md, "Validation against the model": chaotic when beyond 3 sigma).
-  // This single run is not (1.3 +- 1.2 1/s; docs/virtual_rig.md), and its record repeats
+  // label of docs/notes/analysis.md, "Validation against the model's own exponent": chaotic
+  // when beyond 3 sigma).
+  // This single run is not (1.3 +- 1.2 1/s; docs/notes/virtual_rig.md), and its record repeats
   // itself at a drifting lag over most of the stroke, which vetoes the divergence.
   ModelLyapunovOptions m;
   m.transient_s = 1.0;
@@ -132,7 +133,7 @@ TEST(FrozenLightPiston, TimeSeriesEstimatorsSeeTheChaosInTheVelocityRecord) {
   const AnalysisResult a = analyze_series(sim.series.channel("v").values, 1000.0);
   ASSERT_TRUE(a.divergence.found_linear_region);
   // The curve rises significantly (the slope's own uncertainty; the value's, with the spread
-  // over segments, is +-2.0 1/s here: docs/analysis.md "Divergence exponent's uncertainty").
+  // over segments, is +-2.0 1/s here: docs/notes/analysis.md "Divergence exponent's uncertainty").
   EXPECT_GT(a.divergence.lambda_per_s, 3.0 * a.divergence.slope_uncertainty_per_s);
   EXPECT_GT(a.wolf.lambda_per_s, 0.0);
   EXPECT_TRUE(a.verdict.chaotic);

@@ -1,5 +1,5 @@
 #pragma once
-// The verdict's validation corpus (docs/analysis.md "Validation corpus"): records of known
+// The verdict's validation corpus (docs/validation.md, the corpus row): records of known
 // regime, generated here, each with its source. Noise comes from our own Box-Muller on
 // std::mt19937_64 (whose sequence the standard fixes), so every standard library sees the
 // same records.

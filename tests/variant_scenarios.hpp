@@ -1,6 +1,6 @@
 #pragma once
 // Scenarios of docs/variants/*.toml, for tests about a mechanism of one particular rig rather
-// than about whatever the default is (docs/virtual_rig.md describes each file).
+// than about whatever the default is (docs/notes/virtual_rig.md describes each file).
 #include <string>
 #include <vector>
 

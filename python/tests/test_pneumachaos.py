@@ -15,7 +15,7 @@ SIMPLE_RIG = os.path.join(REPO, "docs", "variants", "simple_rig.toml")
 
 def lorenz_x(n, dt=0.01, transient=2000):
     """x of the Lorenz system (sigma 10, rho 28, beta 8/3) by RK4; largest exponent 0.906
-    per time unit (the reference value of docs/analysis.md)."""
+    per time unit (the reference value of docs/notes/analysis.md)."""
     def f(s):
         x, y, z = s
         return np.array([10.0 * (y - x), x * (28.0 - z) - y, x * y - 8.0 / 3.0 * z])

@@ -217,7 +217,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
        "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
        "fit window, segments"}};
   j["lyapunov"]["divergence"]["status"] = r.divergence_status;
-  // The exponent fitted on each contiguous segment of the record (docs/analysis.md
+  // The exponent fitted on each contiguous segment of the record (docs/notes/analysis.md
   // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
   std::vector<double> segments;
   for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);

@@ -48,7 +48,7 @@ void rest_statistics(std::span<const double> x, double level, std::size_t min_le
 // first minimum can lie beyond that on a short oversampled record (Lorenz at dt = 0.005,
 // 1e4 samples: 125 samples, two thirds of an orbit), where samples a quarter period apart are
 // already far from redundant. The period here is the maxima spacing of the record smoothed
-// over one delay, which noise does not shorten (docs/analysis.md "Evidence scale").
+// over one delay, which noise does not shorten (docs/notes/analysis.md "Evidence scale").
 void run_evidence_tests(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
   const double period = smoothed_period(x, r.delay.delay);
   const auto quarter = static_cast<std::size_t>(std::lround(period / 4.0));
@@ -87,7 +87,7 @@ void run_evidence_tests(std::span<const double> x, const AnalysisOptions& o, Ana
 // Wolf's program on a record without deterministic structure measures nothing (white noise
 // reads ~300 /s) and is the analysis's most expensive part there (1e5 samples: 10 s of 11.5):
 // it is not run when the local-constant predictor does no better than the linear one, the
-// signature of linear noise (docs/analysis.md "Wolf's status").
+// signature of linear noise (docs/notes/analysis.md "Wolf's status").
 void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
               AnalysisResult& r) {
   if (r.prediction.computed && r.prediction.ratio() >= 1.0) {

@@ -27,7 +27,7 @@ std::size_t stencil_start(double t, std::size_t n, std::size_t needed) {
 
 // interpolate_series, inlined into closest_offset: Wolf's program aligns 40 candidates per
 // replacement, 18 interpolations each, and the calls cost a sixth of a 1e6-sample analysis
-// (docs/performance.md). The arithmetic is the same.
+// (docs/notes/performance.md). The arithmetic is the same.
 inline double cubic_at(std::span<const double> x, double t) {
   const std::size_t s = stencil_start(t, x.size(), 4);
   const double u = t - static_cast<double>(s + 1);

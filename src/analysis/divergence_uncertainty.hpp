@@ -1,6 +1,6 @@
 #pragma once
 // The divergence exponent measured separately on contiguous segments of the record
-// (docs/analysis.md "Divergence exponent's uncertainty"); internal to the analysis module.
+// (docs/notes/analysis.md "Divergence exponent's uncertainty"); internal to the analysis module.
 
 #include <cstddef>
 #include <vector>

@@ -2,7 +2,7 @@
 // An exact k-d tree whose points are stored in tree order: each node's points are one
 // contiguous block of rows, so building and searching read memory in sequence rather than
 // gathering each coordinate through a permutation (nanoflann's layout). On this machine that
-// gather was half of a whole analysis (docs/performance.md). Internal to the analysis module;
+// gather was half of a whole analysis (docs/notes/performance.md). Internal to the analysis module;
 // results are reported through nanoflann's result-set protocol (addPoint, worstDist), and the
 // search prunes with the incremental distance to the cell (Arya & Mount), as nanoflann does.
 

@@ -99,7 +99,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
                std::vector<std::vector<double>>(blocks, std::vector<double>(p.K + 1, 0.0))};
   std::vector<std::size_t> references;
   for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
-  // All neighbours first (searched in the tree's order: docs/performance.md), then the sums
+  // All neighbours first (searched in the tree's order: docs/notes/performance.md), then the sums
   // in the references' order, so every sum adds the same terms in the same order as before.
   const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1), logs(p.K + 1);
@@ -156,7 +156,7 @@ double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const Diverge
 }
 
 // The value's uncertainty adds, in quadrature, the spread of the exponent fitted separately
-// on contiguous segments of the record, each with its own window (docs/analysis.md
+// on contiguous segments of the record, each with its own window (docs/notes/analysis.md
 // "Divergence exponent's uncertainty"). Fills both uncertainties and the segments.
 void uncertainties(const BlockSums& bs, std::size_t spacing, const DivergenceOptions& o,
                    double rate_Hz, DivergenceResult& r) {

@@ -46,7 +46,7 @@ void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note
 // A near-repeat x(t + L) ~ x(t) is a pair of nearby states; under a positive exponent its
 // mismatch would grow at that rate until it reached the attractor's size. Staying small over
 // most of the record and growing slower than the slowest exponent the divergence test
-// supports refutes the divergence (docs/analysis.md "Regime verdict").
+// supports refutes the divergence (docs/notes/analysis.md "Regime verdict").
 void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
                      Criteria& c) {
   const SelfRepetition& s = e.repetition;

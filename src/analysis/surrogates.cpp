@@ -110,7 +110,7 @@ std::vector<double> iaaft_surrogate(std::span<const double> x, std::uint64_t see
     plan.forward(s, X);
     // Stop once the surrogate's amplitude spectrum is within `tolerance` (RMS, relative) of
     // the record's: the values are exact after every rank adjustment, the spectrum only
-    // approaches (docs/analysis.md "Surrogate-data test").
+    // approaches (docs/notes/analysis.md "Surrogate-data test").
     double mismatch = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
       const double d = std::abs(X[k]) - amplitude[k];

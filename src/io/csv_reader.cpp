@@ -36,7 +36,7 @@ std::vector<std::string> split(const std::string& line, bool commas) {
 
 // The same fields as split(), as views into `line` (no allocation per field): the reader's
 // per-line cost was a string stream and a string per field, 11 % of a 1e4-sample analysis
-// (docs/performance.md). Fields that start or end with a quote are left as they are for the
+// (docs/notes/performance.md). Fields that start or end with a quote are left as they are for the
 // caller to trim exactly as trim_field does.
 void split_views(std::string_view line, bool commas, std::vector<std::string_view>& fields) {
   fields.clear();

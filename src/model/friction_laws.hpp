@@ -60,7 +60,7 @@ T static_N(const P& p, const BasicFrictionInput<T>& in) {
 }
 
 /// Fc and Fs together: the texture's sines, the bulk of a friction evaluation on a textured
-/// bore (docs/performance.md), are summed once for both.
+/// bore (docs/notes/performance.md), are summed once for both.
 template <typename T>
 struct Levels {
   T coulomb_N;

@@ -29,7 +29,8 @@ double rate_per_speed_over_level(const FrictionParams& p) {
 
 // An upper bound of that rate c |v| / g from a lower bound of g (its
 // smaller level, the pressure term only where it lowers g, the texture at its deepest), with
-// no exp or sin: the switching function checks it at every step of every run (docs/performance.md).
+// no exp or sin: the switching function checks it at every step of every run
+// (docs/notes/performance.md).
 double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, int direction) {
   double texture_low = 1.0;
   for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);

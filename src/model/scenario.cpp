@@ -139,10 +139,11 @@ void Scenario::set_total_moving_mass(double kg) {
 Scenario default_scenario() {
   Scenario s;
   // Seal on the piston + rod: the default's Stribeck curve with generalized Maxwell-slip
-  // presliding (docs/virtual_rig.md, searches 21-22). Fc and Fs lie in the 15-30 N / 30-50 N
-  // measured for 32-40 mm standard seals; the drop over ~45 mm/s puts the negative slope of the
-  // paper's Fig. 3 at its operating speeds. With the moving mass this stroke implies, only the
-  // GMS seal stayed chaotic (the LuGre seal of the previous default did not, search 22).
+  // presliding (docs/notes/virtual_rig.md, "What was tried", 5-6). Fc and Fs lie in the
+  // 15-30 N / 30-50 N measured for 32-40 mm standard seals; the drop over ~45 mm/s puts the
+  // negative slope of the paper's Fig. 3 at its operating speeds. With the moving mass this
+  // stroke implies, only the GMS seal stayed chaotic (the LuGre seal of the previous default
+  // did not, search 22).
   s.friction.kind = FrictionKind::kGms;
   s.friction.coulomb_N = 19.7;
   s.friction.static_N = 47.0;

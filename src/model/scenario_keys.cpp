@@ -118,7 +118,7 @@ void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref
   keys.push_back(number(
       prefix + "gms_quasi_static_rate", "1/s",
       "gms: loading rate 4 |v| / r of the slowest element above which the elements are taken "
-      "on their shares' slow manifold (0: never; off by default, docs/performance.md)",
+      "on their shares' slow manifold (0: never; off by default, docs/notes/performance.md)",
       1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).gms_quasi_static_rate_per_s; }));
 }
 
@@ -497,7 +497,8 @@ std::string scenario_to_toml(const Scenario& scenario) {
   std::string out =
       "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n"
       "#\n"
-      "# The defaults are the virtual rig (docs/virtual_rig.md), not a generic cylinder: its\n"
+      "# The defaults are the virtual rig (docs/notes/virtual_rig.md), not a generic cylinder: "
+      "its\n"
       "# load sits on its own guide, coupled to the rod by a spring (load.coupling = \"spring\",\n"
       "# a mode near 20 Hz), and its seal is a generalized Maxwell-slip model fitted to that rig.\n"
       "# For your own cylinder, set load.coupling = \"rigid\" unless its mount is compliant,\n"

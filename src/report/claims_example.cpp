@@ -63,7 +63,8 @@ Claim verdict(const ClaimInputs& in) {
           "oscillation.",
           "Section 4.2, Fig. 7",
           "the example's record, judged from its indices together, is chaotic",
-          "the regime verdict of the settled record (docs/analysis.md) is chaotic (margin +1 or "
+          "the regime verdict of the settled record (docs/notes/analysis.md) is chaotic "
+          "(margin +1 or "
           "-1)",
           "fig7a_record"};
   if (!in.example_chaotic) return missing(c, "no record");

@@ -29,7 +29,7 @@ std::string escape(const std::string& s) {
 }
 
 // What the reader must know before any number: the rig is not the paper's model (the evidence
-// for each difference is docs/virtual_rig.md).
+// for each difference is docs/notes/virtual_rig.md).
 const char* kVirtualRig =
     "<h2>The virtual rig</h2>\n<p>The paper's model (eq. 4 friction, one rigid mass, chamber "
     "volumes following the piston) gives damped or self-excited oscillation but no chaos: the "
@@ -49,7 +49,7 @@ const char* kVirtualRig =
     "(at the Fig. 7 point after about 7.5 s), so its records are as long as the stroke "
     "allows. Fig. 2 uses the paper's own model. The evidence (the variants tried, their "
     "exponents and maps, and what this rig does not reach) is in the repository's "
-    "<code>docs/virtual_rig.md</code>; the full scenario is at the end of this page.</p>\n";
+    "<code>docs/notes/virtual_rig.md</code>; the full scenario is at the end of this page.</p>\n";
 
 
 std::string claims_table(const std::vector<Claim>& claims) {

@@ -127,7 +127,7 @@ Scenario paper_conditions(Scenario s) {
   return s;
 }
 
-// The maps' grid and run-to-run variation (docs/virtual_rig.md).
+// The maps' grid and run-to-run variation (docs/notes/virtual_rig.md).
 SweepSpec map_spec(const Scenario& base, bool quick, bool full_maps) {
   SweepSpec spec;
   spec.base = base;
@@ -153,7 +153,7 @@ void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vec
   if (a.divergence.found_linear_region) {
     ci.example_lambda = a.divergence.lambda_per_s;
     // The claim tests the rise (3 sigma), as the verdict does: the slope's uncertainty
-    // (docs/analysis.md "Divergence exponent's uncertainty").
+    // (docs/notes/analysis.md "Divergence exponent's uncertainty").
     ci.example_uncertainty = a.divergence.slope_uncertainty_per_s;
   }
   if (a.wolf_run) ci.example_wolf = a.wolf.lambda_per_s;
@@ -226,7 +226,7 @@ class ReportBuilder {
     const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
     const AnalysisResult a = analyze_series(v, example_.series.rate_Hz());
     // The model's exponent after 1 s of start-up over the rest of the record, which with the
-    // volumes following the piston ends at the stroke end (docs/virtual_rig.md).
+    // volumes following the piston ends at the stroke end (docs/notes/virtual_rig.md).
     ModelLyapunovOptions lo;
     lo.transient_s = 1.0;
     lo.measure_s = record_s() - lo.transient_s;

@@ -14,9 +14,10 @@
 
 namespace pneumachaos::detail {
 
-/// The step-size controller of Hairer & Wanner's DOPRI5 code (a PI controller, docs/performance.md),
-/// in the interface Boost.Odeint's controlled stepper asks of a step adjuster: the new step
-/// is h * 0.9 * err^-(0.2 - 0.75 beta) * err_prev^beta with beta = 0.04, the factor within
+/// The step-size controller of Hairer & Wanner's DOPRI5 code (a PI controller,
+/// docs/notes/performance.md), in the interface Boost.Odeint's controlled stepper asks of a
+/// step adjuster: the new step is h * 0.9 * err^-(0.2 - 0.75 beta) * err_prev^beta with
+/// beta = 0.04, the factor within
 /// [0.2, 10], and no growth right after a rejection. err is the largest error relative to the
 /// tolerance (accept when <= 1). Odeint's default grows only when err < 1/2 and shrinks with
 /// err^-1/3, which rejects one step in five on the default rig; this one, one in twelve.

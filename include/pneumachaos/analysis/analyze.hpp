@@ -45,7 +45,7 @@ struct AnalysisResult {
   double mean = 0.0, standard_deviation = 0.0;
   double maxima_spacing_samples = 0.0;  ///< mean spacing of maxima
   /// Orbital period: the maxima spacing, or the fundamental's period when the maxima follow
-  /// a harmonic (orbital_period, docs/analysis.md "Orbital period").
+  /// a harmonic (orbital_period, docs/notes/analysis.md "Orbital period").
   double period_samples = 0.0;
   Spectrum spectrum;
   Autocorrelation acf;

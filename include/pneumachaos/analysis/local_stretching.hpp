@@ -4,7 +4,7 @@
 // chaotic flow stretches in one part of its state space and folds (turns back, bringing
 // distant parts together) in another; this is the measurement behind a statement such as
 // "the trajectory is folded between 180 and 140 and stretched between 140 and 0"
-// (docs/analysis.md, "Local stretching").
+// (docs/notes/analysis.md, "Local stretching").
 
 #include <cstddef>
 #include <span>

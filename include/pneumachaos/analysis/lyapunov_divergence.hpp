@@ -34,7 +34,7 @@ struct DivergenceOptions {
   std::size_t jackknife_blocks = 10;
   /// Contiguous segments of the record (groups of jackknife blocks) on which the exponent is
   /// also fitted separately, each with its own linear region; their spread is part of the
-  /// uncertainty (docs/analysis.md "Divergence exponent's uncertainty"). 2..jackknife_blocks.
+  /// uncertainty (docs/notes/analysis.md "Divergence exponent's uncertainty"). 2..jackknife_blocks.
   std::size_t segments = 5;
   void validate(std::size_t n_samples) const;
 };
@@ -47,7 +47,7 @@ struct DivergenceResult {
   double intercept = 0.0;
   double lambda_per_s = 0.0;       ///< slope * rate
   /// The value's uncertainty: the slope's (below) and the spread of the segments' exponents,
-  /// in quadrature; +-1.96 of it is meant as a 95 % interval (docs/analysis.md "Divergence
+  /// in quadrature; +-1.96 of it is meant as a 95 % interval (docs/notes/analysis.md "Divergence
   /// exponent's uncertainty").
   double uncertainty_per_s = 0.0;
   /// The chosen window's slope alone: jackknife standard error over blocks of references and

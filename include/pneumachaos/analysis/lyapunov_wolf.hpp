@@ -10,7 +10,7 @@
 // measured (a fresh nearest neighbour first grows faster than the Lyapunov rate, the initial
 // transient of every divergence curve) while the pair it replaces is still measured, so no
 // stretch of the fiducial trajectory is skipped; several staggered fiducial chains pooled.
-// Measured accuracy with the defaults (1e4 samples; docs/analysis.md): logistic 0 %,
+// Measured accuracy with the defaults (1e4 samples; docs/notes/analysis.md): logistic 0 %,
 // Henon -8 %, Lorenz -8 ... +8 % over eight records, Rossler -16 ... -2 % over eight.
 
 #include <cstddef>

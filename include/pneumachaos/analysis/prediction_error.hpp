@@ -3,7 +3,7 @@
 // predictor in the delay embedding (Farmer & Sidorowich 1987, Phys. Rev. Lett. 59) and by the
 // best linear predictor on the same delay coordinates. A deterministic nonlinear record is
 // predicted far better by its neighbours in the embedding than by any linear rule; for a
-// linear Gaussian process the linear predictor is optimal (docs/analysis.md "Determinism").
+// linear Gaussian process the linear predictor is optimal (docs/notes/analysis.md "Determinism").
 
 #include <cstddef>
 #include <span>

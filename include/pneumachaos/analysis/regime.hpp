@@ -1,5 +1,5 @@
 #pragma once
-// The regime verdict of a record (docs/analysis.md "Regime verdict"): steady, periodic,
+// The regime verdict of a record (docs/notes/analysis.md "Regime verdict"): steady, periodic,
 // quasi-periodic, stick-slip, chaotic, stochastic or undetermined, with the evidence, the
 // thresholds and the rule that decided it. Chaotic and stick-slip are separate flags, as the
 // paper's maps overlay them. No single index vetoes: the spectrum and the autocorrelation are
@@ -38,7 +38,7 @@ struct VerdictOptions {
   /// Steady: the last half varies (std) by at most this fraction of max(|mean|, range).
   double steady_variation = 0.01;
   /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its slope's
-  /// uncertainty (the curve rises significantly; docs/analysis.md "Divergence exponent's
+  /// uncertainty (the curve rises significantly; docs/notes/analysis.md "Divergence exponent's
   /// uncertainty").
   double lyapunov_sigmas = 3.0;
   /// The 0-1 test's K tends to 0 for regular and to 1 for chaotic (or stochastic) dynamics;
@@ -51,7 +51,7 @@ struct VerdictOptions {
   /// the linear one clearly (ratio below this). A linear record beats all 39 surrogates by
   /// chance once in 40, and a noise-driven nonlinear oscillator beats them every time, yet
   /// both are forecast about as well linearly (ratio 0.9-1.4); noisy chaos reads 0.6-0.76
-  /// (docs/analysis.md, "Blind records").
+  /// (docs/validation.md, the blind-records row).
   double surrogate_max_prediction_ratio = 0.8;
   /// Regular motion keeps its autocorrelation: late envelope at least this (a tone: ~0.8).
   double periodic_min_late_acf = 0.5;

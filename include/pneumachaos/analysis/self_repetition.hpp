@@ -3,7 +3,7 @@
 // cannot: a near-repeat x(t + L) ~ x(t) is a pair of nearby states, and nearby states separate
 // at the rate of the largest exponent until the separation reaches the attractor's size. So a
 // mismatch that stays small over a long stretch refutes a claimed exponential divergence
-// (docs/analysis.md "Regime verdict", the self-repetition veto).
+// (docs/notes/analysis.md "Regime verdict", the self-repetition veto).
 
 #include <cstddef>
 #include <span>
@@ -15,7 +15,7 @@ struct SelfRepetitionOptions {
   /// "Small": the windowed RMS mismatch at most this fraction of the attractor's size (the
   /// RMS distance of two independent samples, sqrt(2) x std). Measurement noise of relative
   /// std s alone gives ~s, so periodic records with up to ~7 % noise still repeat; a chaotic
-  /// separation saturates at ~1 (docs/analysis.md).
+  /// separation saturates at ~1 (docs/notes/analysis.md).
   double max_mismatch = 0.1;
   /// ...over a stretch of at least this share of the record ("most of its length").
   double min_share = 0.5;

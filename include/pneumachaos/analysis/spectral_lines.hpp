@@ -23,7 +23,7 @@ SpectralLines spectral_lines(std::span<const double> x);
 /// mode — the faster of the two lines, at least about twice the slower's frequency, has the
 /// maxima's rate within 10 % — in which case the state repeats only after the slower line's
 /// period, which is returned (the rig's piston: a 25 Hz mount oscillation on a 6.3 Hz orbit;
-/// docs/analysis.md "Orbital period").
+/// docs/notes/analysis.md "Orbital period").
 double orbital_period(double maxima_spacing, const SpectralLines& lines, std::size_t samples);
 
 }  // namespace pneumachaos

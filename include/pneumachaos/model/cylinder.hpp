@@ -10,8 +10,9 @@ struct CylinderGeometry {
   double dead_volume_head_m3 = 20e-6;  ///< chamber 1 volume at x = 0, tubing included
   double dead_volume_rod_m3 = 20e-6;   ///< chamber 2 volume at x = stroke, tubing included
   /// When >= 0: the chamber volumes are evaluated at this piston position whatever x is, and
-  /// the stroke end does not stop the run (docs/virtual_rig.md: "volumes frozen at one piston
-  /// position"): the dynamics of a long stroke around one position, for long records.
+  /// the stroke end does not stop the run (docs/notes/virtual_rig.md, "What was tried":
+  /// volumes frozen at one position): the dynamics of a long stroke around one position, for
+  /// long records.
   double frozen_position_m = -1e-3;  ///< -1 mm: off (the key's documented value)
   [[nodiscard]] bool volumes_frozen() const { return frozen_position_m >= 0.0; }
 

@@ -25,7 +25,7 @@ enum class ContactMode : std::int8_t {
   kAtStop = 4,    ///< piston held against the stop at x = 0
   /// Smooth friction model moving with v >= 0 (v <= 0): |v| is integrated as +v (-v), its
   /// smooth continuation, and the crossing of v = 0 is an event that flips the branch, so no
-  /// step straddles the kink of |v| (docs/model.md, "Friction"; docs/performance.md).
+  /// step straddles the kink of |v| (docs/model.md, "Friction"; docs/notes/performance.md).
   kSmoothPos = 5,
   kSmoothNeg = 6,
   /// LuGre or GMS moving with v > 0 (v < 0) fast enough that its bristle (its elements)

@@ -114,8 +114,8 @@ struct Scenario {
 /// The built-in default scenario: the virtual rig (a 1.5 kg load on its own guide coupled to a
 /// 1.05 kg piston + rod by a compliant mount, a generalized Maxwell-slip seal on a wide
 /// Stribeck curve, chamber volumes following the piston over a 500 mm stroke), at the paper's
-/// chaotic point S1 = 2.70, S2 = 0.35 mm^2. Every value and its reasoning: docs/virtual_rig.md
-/// and docs/scenario.md.
+/// chaotic point S1 = 2.70, S2 = 0.35 mm^2. Every value and its reasoning:
+/// docs/notes/virtual_rig.md and docs/scenario.md.
 Scenario default_scenario();
 
 /// What a user should know about a valid scenario, one sentence each (commands print them as

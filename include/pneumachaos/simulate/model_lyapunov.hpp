@@ -20,7 +20,7 @@ struct ModelLyapunovOptions {
   double renormalize_s = 0.02;  ///< interval between renormalisations
   /// Initial and renormalised separation in the scaled norm: far above the integration error,
   /// far below the size of the motion (for the cylinder 1e-3 = 10 Pa on P1, 1e6 x the default
-  /// rtol; docs/analysis.md "The model exponent's separation floor").
+  /// rtol; docs/notes/analysis.md "The model exponent's separation floor").
   double separation = 1e-3;
   /// Per-state scales of the norm (empty: all 1); states with scale 0 are not perturbed.
   std::vector<double> scales;
@@ -60,7 +60,7 @@ class Plant;
 
 /// The cylinder's smallest separation per unit of relative tolerance. Below it the two
 /// trajectories' integration errors, accumulated over an interval, are renormalised as if they
-/// were divergence and the exponent grows as the separation shrinks (docs/analysis.md, "The
+/// were divergence and the exponent grows as the separation shrinks (docs/notes/analysis.md, "The
 /// model exponent's separation floor": at rtol 1e-9 a periodic point reads 0.0 at 1e-3,
 /// 0.7-1.8 1/s at 1e-4 and 3.7-8.5 1/s at 3e-5).
 inline constexpr double kPlantSeparationPerTolerance = 1e6;

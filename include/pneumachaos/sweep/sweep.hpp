@@ -15,7 +15,7 @@
 
 namespace pneumachaos {
 
-/// The model's own finite-time exponent per run (plant_lyapunov, docs/virtual_rig.md): after
+/// The model's own finite-time exponent per run (plant_lyapunov, docs/notes/virtual_rig.md): after
 /// the start-up transient, over the rest of the run (to its stroke end or its duration).
 struct ModelExponentSpec {
   bool enabled = false;
