@@ -7,6 +7,10 @@
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
+#include "pneumachaos/identify/friction_fits.hpp"
+#include "pneumachaos/identify/measured_record_csv.hpp"
+#include "pneumachaos/io/csv_reader.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -57,6 +61,43 @@ TEST(OptionsValidation, FitSettingsAreNamed) {
   o = identify::FitOptions{};
   o.relative_tolerance = 1e-14;
   EXPECT_NE(message_of(o).find("relative_tolerance"), std::string::npos);
+}
+
+TEST(OptionsValidation, RecordReadingAndFrictionFitSettingsAreNamed) {
+  using identify::FrictionFitOptions;
+  using identify::RecordReadOptions;
+  EXPECT_EQ(message_of(RecordReadOptions{}), "");
+  RecordReadOptions r;
+  r.ambient_Pa = -1.0;
+  EXPECT_NE(message_of(r).find("record ambient_Pa"), std::string::npos) << message_of(r);
+  r = RecordReadOptions{};
+  r.stroke_m = 0.0;
+  EXPECT_NE(message_of(r).find("record stroke_m"), std::string::npos);
+  EXPECT_EQ(message_of(FrictionFitOptions{}), "");
+  FrictionFitOptions f;
+  f.models.clear();
+  EXPECT_NE(message_of(f).find("friction fit models"), std::string::npos);
+  f = FrictionFitOptions{};
+  f.max_iterations = 0;
+  EXPECT_NE(message_of(f).find("max_iterations"), std::string::npos);
+}
+
+TEST(OptionsValidation, SeriesReadingAndStabilitySettingsAreNamed) {
+  EXPECT_EQ(message_of(CsvSeriesOptions{}), "");
+  CsvSeriesOptions c;
+  c.time_jitter = 2.0;
+  EXPECT_NE(message_of(c).find("time_jitter"), std::string::npos);
+  c = CsvSeriesOptions{};
+  c.column.clear();
+  EXPECT_NE(message_of(c).find("column"), std::string::npos);
+  // The reader checks them before it reads a line.
+  c = CsvSeriesOptions{};
+  c.time_jitter = -1.0;
+  EXPECT_THROW(parse_csv_series("t,v\n0,1\n", "test.csv", c), Error);
+  EXPECT_EQ(message_of(StabilityOptions{}), "");
+  StabilityOptions s;
+  s.equilibrium.scan_points = 2;  // the nested options are checked too
+  EXPECT_NE(message_of(s).find("scan_points"), std::string::npos);
 }
 
 }  // namespace

@@ -632,6 +632,7 @@ double steady_friction_N(const FrictionParams& p, double v, double gauge_sum_Pa)
 }
 
 FrictionFits fit_friction(const FrictionEstimate& e, const FrictionFitOptions& o) {
+  o.validate();
   const FitData pts = fit_data(e);
   const std::size_t sliding = e.sliding_count();
   const bool breakaways = !pts.breakaways.empty();

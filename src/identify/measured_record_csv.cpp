@@ -246,6 +246,7 @@ void check_travel(const ColumnSet& c, const std::vector<std::size_t>& line_of,
 MeasuredRecord parse_measured_record(const std::string& text, const std::string& origin,
                                      const RecordColumns& names,
                                      const RecordReadOptions& options) {
+  options.validate();
   CsvLines lines(text);
   std::string line;
   if (!lines.next(line)) throw Error(origin, "the file is empty: expected a header line");
@@ -285,6 +286,7 @@ RecordReadOptions read_options_for(const Scenario& scenario) {
 
 MeasuredRecord read_measured_record(const std::string& path, const RecordColumns& names,
                                     const RecordReadOptions& options) {
+  options.validate();
   std::ostringstream text;
   if (path == "-") {
     text << std::cin.rdbuf();

@@ -250,9 +250,7 @@ std::vector<std::string> split_csv_fields(const std::string& line) {
 
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
-  if (options.rate_Hz && !(std::isfinite(*options.rate_Hz) && *options.rate_Hz > 0.0)) {
-    throw Error("sampling rate", fmt::format("must be a positive number of Hz, got {}", *options.rate_Hz));
-  }
+  options.validate();
   // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
   CsvLines lines(text);
   std::string line;
@@ -283,6 +281,14 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
   series.add_channel(layout.has_header ? header_name(header) : header,
                      layout.has_header ? header_unit(header) : "", std::move(c.values));
   return series;
+}
+
+void CsvSeriesOptions::validate() const {
+  if (column.empty()) throw Error("column", "expected a column's name or number");
+  if (rate_Hz && !(std::isfinite(*rate_Hz) && *rate_Hz > 0.0))
+    throw Error("sampling rate", fmt::format("must be a positive number of Hz, got {}", *rate_Hz));
+  if (!(time_jitter >= 0.0 && time_jitter < 1.0))
+    throw Error("time_jitter", fmt::format("{}: must be >= 0 and < 1", time_jitter));
 }
 
 TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options) {

@@ -176,8 +176,18 @@ Scenario default_scenario() {
   // (ratio 0.04; the 0.06 of the earlier rig, 11 N*s/m, lost the Fig. 7 row there).
   s.load.coupling_stiffness_N_per_m = 12.46e3;
   s.load.coupling_damping_Ns_per_m = 7.0;
-  s.load.guide_friction = {
-      FrictionKind::kLuGre, 12.5, 13.5, 16.0, 0.0037, 0.5, 1.9e5, 86.0, 0.0, 0.0, {}};
+  FrictionParams& guide = s.load.guide_friction;
+  guide = FrictionParams{};  // every field not named below at its default
+  guide.kind = FrictionKind::kLuGre;
+  guide.coulomb_N = 12.5;
+  guide.static_N = 13.5;
+  guide.viscous_Ns_per_m = 16.0;
+  guide.stribeck_velocity_m_per_s = 0.0037;
+  guide.stribeck_exponent = 0.5;
+  guide.sigma0_N_per_m = 1.9e5;
+  guide.sigma1_Ns_per_m = 86.0;
+  guide.coulomb_gain_N_per_Pa = 0.0;
+  guide.static_gain_N_per_Pa = 0.0;
   // The chamber volumes follow the piston over the 500 mm stroke (a catalogue stroke of a
   // 40 mm bore, which comes up to ~1 m); a run ends at the stroke end, at the Fig. 7 point
   // after about 7.5 s, so the frozen position is off (the key stays for studies).

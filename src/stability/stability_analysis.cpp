@@ -53,6 +53,7 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq) 
 }
 
 StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& options) {
+  options.validate();
   StabilityResult r;
   const EquilibriumResult eqs = find_equilibria(plant, options.equilibrium);
   if (!eqs.exists()) {

@@ -29,6 +29,8 @@ struct FrictionFitOptions {
   /// LuGre start (and the Stribeck levels when no Stribeck fit is available).
   FrictionParams start;
   int max_iterations = 200;
+  /// Throws Error naming the field that is out of range.
+  void validate() const;
 };
 
 /// A parameter as the scenario names it (Fc_N, Fs_N, vs_mm_per_s, B_Ns_per_m, ...), in that

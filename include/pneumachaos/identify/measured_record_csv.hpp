@@ -38,6 +38,8 @@ struct RecordReadOptions {
   /// Speeds above this (m/s) are refused whatever the stroke: no pneumatic cylinder moves
   /// at 10 m/s, a velocity in mm/s labelled m/s does.
   double max_speed_m_per_s = 10.0;
+  /// Throws Error naming the field that is out of range.
+  void validate() const;
 };
 
 /// Accepted units: time s, ms; velocity m/s, mm/s; pressure Pa, kPa, MPa, bar, psi, each

@@ -20,6 +20,8 @@ struct CsvSeriesOptions {
   /// Largest allowed deviation of a time step from the median step, relative to it; A/D
   /// timestamps jitter a little, a missing sample (a step of 2) is refused.
   double time_jitter = 0.01;
+  /// Throws Error naming the field that is out of range.
+  void validate() const;
 };
 
 /// Reads the column as a one-channel TimeSeries named after it; path "-" reads standard

@@ -30,6 +30,7 @@ PaperCoefficients paper_coefficients(const Plant& plant, const Equilibrium& eq);
 
 struct StabilityOptions {
   EquilibriumOptions equilibrium;
+  void validate() const { equilibrium.validate(); }
 };
 
 struct StabilityResult {
