@@ -29,9 +29,10 @@ namespace fs = std::filesystem;
 void check_out_dir(const CalibrateOptions& o) {
   std::error_code ec;
   if (!fs::exists(o.out_dir, ec) || fs::is_empty(o.out_dir, ec)) return;
-  if (!fs::exists(fs::path(o.out_dir) / "journal.csv", ec))
-    throw Error(o.out_dir, "exists and is not a calibration directory (no journal.csv); choose a "
-                           "new or empty directory");
+  const fs::path dir(o.out_dir);
+  if (!fs::exists(dir / "journal.csv", ec) && !fs::exists(dir / "sweeps", ec))
+    throw Error(o.out_dir, "exists and is not a calibration directory (no journal.csv or "
+                           "sweeps/); choose a new or empty directory");
   if (!o.resume)
     throw Error(o.out_dir, "holds a calibration already: pass --resume to continue it (its "
                            "evaluations are replayed), or choose a new directory");
@@ -116,6 +117,8 @@ CalibrationResult calibrate(const CalibrationSpec& spec, const CalibrateOptions&
   std::optional<MeasuredMap> measured;
   if (spec.objective.kind == ObjectiveKind::kIncidenceMap)
     measured = read_measured_map(spec.objective.measured_map);
+  // Under MPI every rank has looked at --out before any rank creates something in it.
+  detail::Distribution::instance().barrier();
   std::error_code ec;
   fs::create_directories(o.out_dir + "/sweeps", ec);
   if (ec) throw RunError(o.out_dir, "cannot create the calibration directory: " + ec.message());

@@ -91,6 +91,17 @@ const toml::table* sub_table(const toml::table& doc, const std::string& name,
   throw Error(at(origin, *n, name), "expected a table [" + name + "]");
 }
 
+// The key must be a number key of the table; its own error lists the section's keys.
+void check_free_key(Scenario& scratch, const std::string& key, const std::string& where) {
+  for (const KeyInfo& k : scenario_key_infos()) {
+    if (k.key != key) continue;
+    if (!k.choices.empty())
+      throw Error(where + " (" + key + ")", "a word key (" + k.choices + ") cannot be free; set it in [fixed]");
+    return;
+  }
+  apply_setting(scratch, key, 0.0, where);  // throws: unknown key, with the keys near it
+}
+
 FreeParameter read_free(const toml::table& t, const std::string& origin) {
   Table r(t, origin, "free.");
   FreeParameter p;
@@ -116,6 +127,7 @@ FreeParameter read_free(const toml::table& t, const std::string& origin) {
   // Each bound goes through the key table: an unknown key, a word key or a bound outside the
   // key's plausible range is refused with the table's own reason.
   Scenario scratch = default_scenario();
+  check_free_key(scratch, p.key, r.where("key"));
   apply_setting(scratch, p.key, p.lower, r.where("lower") + " (" + p.key + ")");
   apply_setting(scratch, p.key, p.upper, r.where("upper") + " (" + p.key + ")");
   if (!(p.lower < p.upper))
