@@ -145,7 +145,11 @@ CalibrationResult best_point_result(const CalibrationSpec& spec, const Optimizer
     // Every point was refused by the model: the claims stay "not reproduced".
   }
   r.all_claims = evaluate_claims(in);
-  r.fitted = pick(r.all_claims, spec.objective.fit.claims, true);
+  // The fitted claims as the objective saw them: without the predicted maps (a claim over
+  // Figs. 4-6 reads the maps it is given).
+  ClaimInputs fit_only = in;
+  for (const MapCondition& m : spec.predict.maps) clear_role(fit_only, m.role);
+  r.fitted = pick(evaluate_claims(fit_only), spec.objective.fit.claims, true);
   r.predicted = pick(r.all_claims, spec.predict.claims, false);
   return r;
 }

@@ -18,6 +18,8 @@ std::optional<SweepSummary>& slot(ClaimInputs& in, const std::string& role) {
 
 }  // namespace
 
+void clear_role(ClaimInputs& inputs, const std::string& role) { slot(inputs, role).reset(); }
+
 bool is_writer_rank() { return Distribution::instance().rank() == 0; }
 
 SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCondition& c) {
@@ -62,7 +64,11 @@ void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
   }
   if (!conditions.example) return;
   try {
-    add_example_inputs(inputs, run_example(scenario, o.example_record_s, o.example_model_exponent));
+    // The example runs without the run-to-run variation, as reproduce's does: the scatter
+    // and texture belong to the maps' repeats.
+    Scenario example = scenario;
+    example.variation = VariationParams{};
+    add_example_inputs(inputs, run_example(example, o.example_record_s, o.example_model_exponent));
   } catch (const RunError&) {
     throw;
   } catch (const Error&) {

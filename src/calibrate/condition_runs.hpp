@@ -29,6 +29,9 @@ void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
 /// Runs one sweep quietly into dir (resumed when there).
 SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSettings& settings);
 
+/// Removes the map of `role` from the inputs.
+void clear_role(ClaimInputs& inputs, const std::string& role);
+
 /// This process's MPI rank (0 without MPI): only rank 0 writes calibrate's own files.
 bool is_writer_rank();
 
