@@ -131,7 +131,7 @@ CalibrationResult calibrate(const CalibrationSpec& spec, const CalibrateOptions&
   detail::Distribution::instance().barrier();
   Loop loop(spec, o, ev, journal);
   const OptimizerTrace trace = minimize(spec.optimizer, spec.free.size(), std::ref(loop));
-  CalibrationResult r = detail::best_point_result(spec, trace, journal.entries(), terms,
+  CalibrationResult r = detail::best_point_result(spec, trace, journal.entries(),
                                                   o.out_dir + "/sweeps/best", {o.threads, 1});
   r.wrote_files = detail::is_writer_rank();
   if (r.wrote_files) {

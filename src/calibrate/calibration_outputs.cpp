@@ -121,8 +121,7 @@ FigureSpec convergence_figure(const std::vector<JournalEntry>& entries, std::siz
 
 CalibrationResult best_point_result(const CalibrationSpec& spec, const OptimizerTrace& trace,
                                     const std::vector<JournalEntry>& entries,
-                                    const std::vector<std::string>& terms, const std::string& dir,
-                                    const RunSettings& settings) {
+                                    const std::string& dir, const RunSettings& settings) {
   CalibrationResult r;
   r.evaluations = trace.f.size();
   r.best = trace.best;
@@ -130,7 +129,6 @@ CalibrationResult best_point_result(const CalibrationSpec& spec, const Optimizer
   const std::vector<double>& u = trace.u[trace.best];
   for (std::size_t i = 0; i < spec.free.size(); ++i) r.best_values.push_back(spec.free[i].value(u[i]));
   if (spec.objective.kind == ObjectiveKind::kIncidenceMap) r.map_errors = entries[trace.best].terms;
-  (void)terms;
   ConditionSet all = spec.objective.fit;
   all.example = all.example || spec.predict.example;
   all.maps.insert(all.maps.end(), spec.predict.maps.begin(), spec.predict.maps.end());

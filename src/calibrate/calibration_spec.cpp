@@ -75,7 +75,6 @@ class Table {
     }
   }
   [[nodiscard]] const std::string& origin() const { return origin_; }
-  [[nodiscard]] const toml::table& raw() const { return t_; }
 
  private:
   const toml::table& t_;
