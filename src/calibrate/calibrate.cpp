@@ -38,15 +38,16 @@ void check_out_dir(const CalibrateOptions& o) {
                            "evaluations are replayed), or choose a new directory");
 }
 
-// The working sweeps of evaluations at least two behind: every rank has left them (each
-// later evaluation's sweep waits for all ranks), so the writer may remove them.
+// The working sweeps of the evaluations before `current`: finished and journalled. The caller
+// has passed a barrier of all ranks first, so no rank still reads them.
 void remove_old_work(const std::string& sweeps, std::size_t current) {
   std::error_code ec;
   for (const auto& d : fs::directory_iterator(sweeps, ec)) {
     const std::string name = d.path().filename().string();
-    if (name.rfind("eval_", 0) != 0) continue;
-    const std::size_t k = std::stoul(name.substr(5));
-    if (k + 2 <= current) fs::remove_all(d.path(), ec);
+    if (name.size() != 10 || name.rfind("eval_", 0) != 0 ||
+        name.find_first_not_of("0123456789", 5) != std::string::npos)
+      continue;
+    if (std::stoul(name.substr(5)) < current) fs::remove_all(d.path(), ec);
   }
 }
 
@@ -71,6 +72,7 @@ class Loop {
       return done[k].objective;
     }
     const std::string sweeps = o_.out_dir + "/sweeps";
+    detail::Distribution::instance().barrier();  // every rank has finished evaluation k - 1
     if (detail::is_writer_rank()) remove_old_work(sweeps, k);
     const detail::Evaluation e = ev_.evaluate(u, fmt::format("{}/eval_{:05}", sweeps, k));
     journal_.append({u, e.objective, e.terms});
@@ -133,10 +135,11 @@ CalibrationResult calibrate(const CalibrationSpec& spec, const CalibrateOptions&
   const OptimizerTrace trace = minimize(spec.optimizer, spec.free.size(), std::ref(loop));
   CalibrationResult r = detail::best_point_result(spec, trace, journal.entries(),
                                                   o.out_dir + "/sweeps/best", {o.threads, 1});
+  detail::Distribution::instance().barrier();  // no rank still reads an evaluation's sweeps
   r.wrote_files = detail::is_writer_rank();
   if (r.wrote_files) {
     detail::write_calibration_outputs(spec, trace, journal.entries(), terms, r, o.out_dir);
-    remove_old_work(o.out_dir + "/sweeps", trace.f.size() + 2);
+    remove_old_work(o.out_dir + "/sweeps", trace.f.size());
   }
   return r;
 }
