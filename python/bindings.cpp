@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/calibrate/calibrate.hpp"
 #include "pneumachaos/identify/fit.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/identify/friction_fits.hpp"
@@ -297,4 +299,23 @@ PYBIND11_MODULE(_core, m) {
   m.def("sweep", &sweep_py);
   m.def("friction_json", &friction_py);
   m.def("fit_json", &fit_py);
+  // calibrate (docs/guide/calibrate.md): runs or resumes SPEC into out_dir and returns its
+  // calibration.json (best point, fitted and predicted claims).
+  m.def("calibrate_json", [](const std::string& spec_path, const std::string& out_dir,
+                             std::size_t threads, bool resume) {
+    const CalibrationSpec spec = read_calibration_spec(spec_path);
+    CalibrateOptions o;
+    o.out_dir = out_dir;
+    o.threads = threads;
+    o.resume = resume;
+    o.progress = false;
+    {
+      py::gil_scoped_release release;
+      calibrate(spec, o);
+    }
+    std::ifstream in(out_dir + "/calibration.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  });
 }

@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libceres-dev libtbb-dev
+  libpagmo-dev
   gnuplot-nox
   mkdocs doxygen
   chromium

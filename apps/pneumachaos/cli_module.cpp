@@ -9,9 +9,9 @@ namespace {
 
 using namespace pneumachaos::cli;
 
-constexpr std::array<AddCommand, 9> kAllCommands{
+constexpr std::array<AddCommand, 10> kAllCommands{
     add_simulate, add_scenario,  add_stability, add_analyze, add_sweep,
-    add_lyapunov, add_reproduce, add_friction,  add_fit};
+    add_lyapunov, add_reproduce, add_friction,  add_fit,     add_calibrate};
 
 }  // namespace
 

@@ -57,6 +57,7 @@ Action add_lyapunov(CLI::App& app);
 Action add_reproduce(CLI::App& app);
 Action add_friction(CLI::App& app);
 Action add_fit(CLI::App& app);
+Action add_calibrate(CLI::App& app);
 
 /// Exit codes shared by all commands.
 inline constexpr int kExitOk = 0;

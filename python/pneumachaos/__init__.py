@@ -15,7 +15,7 @@ import numpy as np
 from . import _core
 
 __all__ = ["Scenario", "SimulationResult", "AnalysisResult", "simulate", "analyze",
-           "stability", "stability_map", "model_lyapunov", "sweep"]
+           "stability", "stability_map", "model_lyapunov", "sweep", "calibrate"]
 
 
 class Scenario:
@@ -231,3 +231,14 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
                        int(threads), bool(resume), progress, bool(wolf), int(surrogates), model,
                        bool(adaptive), int(adaptive_step))
+
+
+def calibrate(spec, out_dir, threads=0, resume=False):
+    """Runs the calibration SPEC (a TOML file, docs/guide/calibrate.md) into out_dir, as
+    `pneumachaos calibrate SPEC --out DIR`; resume=True continues one journalled there. Returns
+    calibration.json as a dict: the best point, its fitted and its predicted claims."""
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 0:
+        raise ValueError(f"calibrate: threads: expected a whole number >= 0, got {threads!r}")
+    if not out_dir:
+        raise ValueError("calibrate: out_dir: a directory for the results is required")
+    return json.loads(_core.calibrate_json(str(spec), str(out_dir), int(threads), bool(resume)))

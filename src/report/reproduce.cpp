@@ -12,6 +12,7 @@
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/report/example_run.hpp"
 #include "pneumachaos/report/figures.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"
 #include "progress.hpp"
@@ -37,9 +38,6 @@ void check_out_dir(const std::string& dir) {
               "exists and is not an earlier report (no index.html, figures/ or sweeps/); "
               "choose a new or empty directory");
 }
-
-// The chaotic example starts at rest; its analysis and Fig. 7 skip the start-up.
-constexpr double kSettle_s = 2.0;
 
 SimulationResult run(Scenario s, double duration_s) {
   s.run.duration_s = duration_s;
@@ -146,31 +144,6 @@ SweepSpec map_spec(const Scenario& base, bool quick, bool full_maps) {
   return spec;
 }
 
-// The Fig. 7 and Fig. 3 numbers of the claims, from the settled record v (which starts at
-// sample `settle` of the full friction channel F).
-void add_example_inputs(ClaimInputs& ci, const AnalysisResult& a, const std::vector<double>& v,
-                        const std::vector<double>& F, std::size_t settle) {
-  if (a.divergence.found_linear_region) {
-    ci.example_lambda = a.divergence.lambda_per_s;
-    // The claim tests the rise (3 sigma), as the verdict does: the slope's uncertainty
-    // (docs/notes/analysis.md "Divergence exponent's uncertainty").
-    ci.example_uncertainty = a.divergence.slope_uncertainty_per_s;
-  }
-  if (a.wolf_run) ci.example_wolf = a.wolf.lambda_per_s;
-  ci.example_chaotic = a.verdict.chaotic;
-  ci.example_regime = regime_name(a.verdict.regime);
-  ci.example_peak_share = a.spectrum.peak_share;
-  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
-  // Low speed: up to a quarter of the example's largest speed.
-  const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-  ci.friction_slope_vmax = 0.25 * vmax;
-  const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(settle), F.end());
-  ci.friction_line = low_speed_line(v, F_settled, ci.friction_slope_vmax);
-  ci.friction_loop = measure_friction_loop(v, F_settled, a.rate_Hz);
-  ci.fold_stretch = measure_fold_stretch(v, a.rate_Hz, a.dimension.dimension, a.delay.delay,
-                                         a.theiler);
-}
-
 // The letters of Fig. 3 for one record: of the loops that start within its last `seconds`,
 // the one with the most marks (the latest among equals), as `pneumachaos friction` finds them.
 std::vector<LoopLabel> loop_letters(const TimeSeries& run, const Scenario& s, double seconds) {
@@ -220,27 +193,14 @@ class ReportBuilder {
   // and start-up, are left out), beside the model's own exponent.
   void chaotic_example() {
     stage_.stage("Fig. 7: the chaotic example and its indices");
-    example_ = run(base_, record_s());
-    const auto& v_all = example_.series.channel("v").values;
-    const auto settle = static_cast<std::size_t>(kSettle_s * example_.series.rate_Hz());
-    const std::vector<double> v(v_all.begin() + static_cast<std::ptrdiff_t>(settle), v_all.end());
-    const AnalysisResult a = analyze_series(v, example_.series.rate_Hz());
-    // The model's exponent after 1 s of start-up over the rest of the record, which with the
-    // volumes following the piston ends at the stroke end (docs/notes/virtual_rig.md).
-    ModelLyapunovOptions lo;
-    lo.transient_s = 1.0;
-    lo.measure_s = record_s() - lo.transient_s;
-    lo.until_terminal_event = true;
-    const ModelLyapunovResult model = plant_lyapunov(Plant(base_), base_.run, lo);
-    for (const auto& f : chaotic_example_figures(v, example_.series.rate_Hz(), kSettle_s, a,
-                                                 model.running_time_s, model.running_per_s)) {
+    const ExampleRun e = run_example(base_, record_s(), true);
+    example_ = e.sim;
+    for (const auto& f : chaotic_example_figures(e.v, example_.series.rate_Hz(), kExampleSettle_s,
+                                                 e.analysis, e.model.running_time_s,
+                                                 e.model.running_per_s)) {
       add(f);
     }
-    add_example_inputs(claims_, a, v, example_.series.channel("F_friction").values, settle);
-    if (model.ok) {
-      claims_.example_model_lambda = model.lambda_per_s;
-      claims_.example_model_uncertainty = model.uncertainty_per_s;
-    }
+    add_example_inputs(claims_, e);
   }
 
   // Fig. 3: friction against velocity in chaotic oscillation and in stick-slip.

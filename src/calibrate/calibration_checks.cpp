@@ -1,0 +1,108 @@
+// The spec's cross-checks, its scenarios and its fingerprint.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "claim_requirements.hpp"
+#include "pneumachaos/calibrate/calibration_spec.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/report/claims.hpp"
+
+namespace pneumachaos {
+namespace {
+
+// The map conditions set Ps and the total moving mass; the grid sets S1 and S2.
+const std::set<std::string> kSetByConditions = {"supply.pressure_MPa", "load.mass_kg",
+                                                "circuit.S1_mm2", "circuit.S2_mm2"};
+
+void check_roles(const ConditionSet& c, std::set<std::string>& roles) {
+  for (const MapCondition& m : c.maps)
+    if (!roles.insert(m.role).second)
+      throw Error(m.where, "role \"" + m.role + "\" is given twice (objective and predict together)");
+}
+
+void check_claims(const std::vector<ClaimWeight>& claims, const ConditionSet& available,
+                  const char* set_name) {
+  for (const ClaimWeight& c : claims) {
+    const std::string missing = detail::missing_for_claim(c.id, available);
+    if (!missing.empty())
+      throw Error(c.where, fmt::format("the {} cannot score this claim: {}", set_name, missing));
+  }
+}
+
+std::string conditions_text(const ConditionSet& c) {
+  std::string s = fmt::format("example={};", c.example);
+  for (const MapCondition& m : c.maps) s += fmt::format("map {} {} {};", m.role, m.Ps_MPa, m.m_kg);
+  for (const ClaimWeight& w : c.claims) s += fmt::format("claim {} {};", w.id, w.weight);
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> known_claim_ids() {
+  std::vector<std::string> ids;
+  for (const Claim& c : evaluate_claims(ClaimInputs{})) ids.push_back(c.id);
+  return ids;
+}
+
+void CalibrationSpec::validate() const {
+  if (free.empty()) throw Error(path + ": free", "name at least one [[free]] parameter");
+  std::set<std::string> keys;
+  for (const FreeParameter& p : free) {
+    if (!keys.insert(p.key).second) throw Error(p.where + " " + p.key, "this key is free twice");
+    if (kSetByConditions.count(p.key) != 0)
+      throw Error(p.where + " " + p.key,
+                  "this key is set by the conditions (the maps' Ps and m, the grid's S1 and S2)");
+  }
+  optimizer.validate();
+  std::set<std::string> roles;
+  check_roles(objective.fit, roles);
+  check_roles(predict, roles);
+  check_claims(objective.fit.claims, objective.fit, "objective's conditions");
+  ConditionSet all = objective.fit;
+  all.example = all.example || predict.example;
+  all.maps.insert(all.maps.end(), predict.maps.begin(), predict.maps.end());
+  check_claims(predict.claims, all, "objective's and predict's conditions together");
+  for (const ClaimWeight& p : predict.claims)
+    for (const ClaimWeight& f : objective.fit.claims)
+      if (p.id == f.id)
+        throw Error(p.where, "this claim is fitted: a prediction must be out of sample");
+  if (!all.maps.empty() && objective.maps.axes.empty())
+    throw Error(path + ": objective.grid", "the maps need grid = [\"circuit.S1_mm2=...\", "
+                                           "\"circuit.S2_mm2=...\"]");
+  try {
+    scenario_at(std::vector<double>(free.size(), 0.5)).validate();
+  } catch (const Error& e) {
+    throw Error(path + ": fixed", std::string("the scenario at the middle of the free box is "
+                                              "invalid: ") + e.what());
+  }
+}
+
+Scenario CalibrationSpec::scenario_at(const std::vector<double>& u) const {
+  Scenario s = base;
+  for (std::size_t i = 0; i < free.size(); ++i) apply_setting(s, free[i].key, free[i].value(u[i]), free[i].where);
+  return s;
+}
+
+std::string CalibrationSpec::fingerprint() const {
+  std::string s = "calibration 1;";
+  for (const FreeParameter& p : free)
+    s += fmt::format("free {} {} {} {};", p.key, p.lower, p.upper, p.log_scale);
+  s += scenario_to_toml(base);
+  const ObjectiveSpec& o = objective;
+  s += fmt::format("objective {} {} {} {} {} {} {} {};", static_cast<int>(o.kind), o.maps.repeats,
+                   o.maps.duration_s, o.maps.adaptive, o.example_record_s,
+                   o.example_model_exponent, o.stick_slip_weight, o.chaos_weight);
+  for (const GridAxis& a : o.maps.axes) {
+    s += a.key;
+    for (double v : a.values) s += fmt::format(" {}", v);
+    s += ";";
+  }
+  s += o.measured_map + ";" + conditions_text(o.fit) + "predict;" + conditions_text(predict);
+  s += fmt::format("optimizer {} {} {} {} {};", optimizer.algorithm, optimizer.population,
+                   optimizer.max_evaluations, optimizer.seed, optimizer.sigma0);
+  return detail::stable_hash(s);
+}
+
+}  // namespace pneumachaos

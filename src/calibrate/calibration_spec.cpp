@@ -1,0 +1,362 @@
+// Reading SPEC.toml (docs/guide/calibrate.md): every problem is an Error naming
+// file:line:column and the key, so a user can find what to fix.
+#include "pneumachaos/calibrate/calibration_spec.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "claim_requirements.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
+#include "pneumachaos/report/example_run.hpp"
+
+namespace pneumachaos {
+namespace {
+
+std::string at(const std::string& origin, const toml::node& n, const std::string& key) {
+  const auto& b = n.source().begin;
+  return fmt::format("{}:{}:{}: {}", origin, b.line, b.column, key);
+}
+
+// The reader of one table: typed look-ups that name the place of every problem, and a check
+// that no key was left unread (a misspelt optional key would otherwise be ignored).
+class Table {
+ public:
+  Table(const toml::table& t, std::string origin, std::string name)
+      : t_(t), origin_(std::move(origin)), name_(std::move(name)) {}
+  [[nodiscard]] std::string where(const std::string& key) const {
+    const toml::node* n = t_.get(key);
+    return at(origin_, n != nullptr ? *n : static_cast<const toml::node&>(t_), name_ + key);
+  }
+  const toml::node* get(const std::string& key) {
+    read_.push_back(key);
+    return t_.get(key);
+  }
+  std::optional<double> number(const std::string& key) {
+    const toml::node* n = get(key);
+    if (n == nullptr) return std::nullopt;
+    if (const auto* i = n->as_integer()) return static_cast<double>(i->get());
+    if (const auto* f = n->as_floating_point()) return f->get();
+    throw Error(where(key), "expected a number");
+  }
+  double number_or(const std::string& key, double fallback) {
+    return number(key).value_or(fallback);
+  }
+  std::size_t count_or(const std::string& key, std::size_t fallback, double lo, double hi) {
+    const auto v = number(key);
+    if (!v) return fallback;
+    if (*v != std::floor(*v) || *v < lo || *v > hi)
+      throw Error(where(key), fmt::format("expected a whole number from {} to {}, got {}", lo, hi, *v));
+    return static_cast<std::size_t>(*v);
+  }
+  std::optional<std::string> text(const std::string& key) {
+    const toml::node* n = get(key);
+    if (n == nullptr) return std::nullopt;
+    if (const auto* s = n->as_string()) return s->get();
+    throw Error(where(key), "expected a string");
+  }
+  bool flag_or(const std::string& key, bool fallback) {
+    const toml::node* n = get(key);
+    if (n == nullptr) return fallback;
+    if (const auto* b = n->as_boolean()) return b->get();
+    throw Error(where(key), "expected true or false");
+  }
+  void no_other_keys() const {
+    for (const auto& [k, node] : t_) {
+      const std::string key(k.str());
+      if (std::find(read_.begin(), read_.end(), key) == read_.end())
+        throw Error(at(origin_, node, name_ + key), "unknown key here (docs/guide/calibrate.md lists them)");
+    }
+  }
+  [[nodiscard]] const std::string& origin() const { return origin_; }
+
+ private:
+  const toml::table& t_;
+  std::string origin_, name_;
+  std::vector<std::string> read_;
+};
+
+const toml::table* sub_table(const toml::table& doc, const std::string& name,
+                             const std::string& origin) {
+  const toml::node* n = doc.get(name);
+  if (n == nullptr) return nullptr;
+  if (const auto* t = n->as_table()) return t;
+  throw Error(at(origin, *n, name), "expected a table [" + name + "]");
+}
+
+// The key must be a number key of the table; its own error lists the section's keys.
+void check_free_key(Scenario& scratch, const std::string& key, const std::string& where) {
+  for (const KeyInfo& k : scenario_key_infos()) {
+    if (k.key != key) continue;
+    if (!k.choices.empty())
+      throw Error(where + " (" + key + ")", "a word key (" + k.choices + ") cannot be free; set it in [fixed]");
+    return;
+  }
+  apply_setting(scratch, key, 0.0, where);  // throws: unknown key, with the keys near it
+}
+
+FreeParameter read_free(const toml::table& t, const std::string& origin) {
+  Table r(t, origin, "free.");
+  FreeParameter p;
+  p.where = at(origin, t, "[[free]]");
+  const auto key = r.text("key");
+  if (!key) throw Error(p.where, "every [[free]] entry needs key = \"a scenario key\"");
+  p.key = *key;
+  const auto lo = r.number("lower"), hi = r.number("upper");
+  if (!lo || !hi) throw Error(p.where + " " + p.key, "needs both lower and upper");
+  p.lower = *lo;
+  p.upper = *hi;
+  const auto source = r.text("source");
+  if (!source || source->find_first_not_of(" \t") == std::string::npos)
+    throw Error(r.where(source ? "source" : "key") + " (" + p.key + ")",
+                "needs source = \"...\": the paper, catalogue or measurement that bounds it; a "
+                "parameter without a citable bound belongs in [fixed]");
+  p.source = *source;
+  const auto scale = r.text("scale");
+  if (scale && *scale != "log" && *scale != "linear")
+    throw Error(r.where("scale"), "expected \"linear\" or \"log\", got \"" + *scale + "\"");
+  p.log_scale = scale && *scale == "log";
+  r.no_other_keys();
+  // Each bound goes through the key table: an unknown key, a word key or a bound outside the
+  // key's plausible range is refused with the table's own reason.
+  Scenario scratch = default_scenario();
+  check_free_key(scratch, p.key, r.where("key"));
+  apply_setting(scratch, p.key, p.lower, r.where("lower") + " (" + p.key + ")");
+  apply_setting(scratch, p.key, p.upper, r.where("upper") + " (" + p.key + ")");
+  if (!(p.lower < p.upper))
+    throw Error(r.where("lower") + " (" + p.key + ")",
+                fmt::format("lower ({}) must be below upper ({})", p.lower, p.upper));
+  if (p.log_scale && p.lower <= 0.0)
+    throw Error(r.where("scale") + " (" + p.key + ")", "a log scale needs lower > 0");
+  return p;
+}
+
+void apply_fixed(Scenario& s, const toml::table& t, const std::string& prefix,
+                 const std::string& origin) {
+  for (const auto& [name, node] : t) {
+    const std::string key = prefix + std::string(name.str());
+    const std::string where = at(origin, node, "fixed." + key);
+    if (const auto* sub = node.as_table()) {
+      apply_fixed(s, *sub, key + ".", origin);
+    } else if (const auto* i = node.as_integer()) {
+      apply_setting(s, key, static_cast<double>(i->get()), where);
+    } else if (const auto* f = node.as_floating_point()) {
+      apply_setting(s, key, f->get(), where);
+    } else if (const auto* w = node.as_string()) {
+      apply_setting(s, key, w->get(), where);
+    } else {
+      throw Error(where, "expected a number or a word");
+    }
+  }
+}
+
+std::vector<ClaimWeight> read_claims(Table& r) {
+  std::vector<ClaimWeight> out;
+  const toml::node* n = r.get("claims");
+  if (n == nullptr) return out;
+  const auto* t = n->as_table();
+  if (t == nullptr) throw Error(r.where("claims"), "expected a table { claim_id = weight, ... }");
+  const std::vector<std::string> known = known_claim_ids();
+  for (const auto& [k, node] : *t) {
+    ClaimWeight c;
+    c.id = std::string(k.str());
+    c.where = at(r.origin(), node, "claims." + c.id);
+    if (std::find(known.begin(), known.end(), c.id) == known.end())
+      throw Error(c.where, "unknown claim id (docs/report.md lists the claims)");
+    const auto w = node.value<double>();
+    if (!w || !(*w > 0.0) || !std::isfinite(*w)) throw Error(c.where, "expected a weight > 0");
+    c.weight = *w;
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<MapCondition> read_maps(Table& r) {
+  std::vector<MapCondition> out;
+  const toml::node* n = r.get("maps");
+  if (n == nullptr) return out;
+  const auto* a = n->as_array();
+  if (a == nullptr) throw Error(r.where("maps"), "expected an array of { role, Ps_MPa, m_kg }");
+  for (const toml::node& item : *a) {
+    const auto* t = item.as_table();
+    if (t == nullptr) throw Error(at(r.origin(), item, "maps"), "expected { role, Ps_MPa, m_kg }");
+    Table m(*t, r.origin(), "maps.");
+    MapCondition c;
+    c.where = at(r.origin(), item, "maps");
+    c.role = m.text("role").value_or("");
+    if (!is_map_role(c.role))
+      throw Error(m.where("role"), "expected role = \"base\" | \"high_ps\" | \"double_m\" | \"triple_m\"");
+    c.Ps_MPa = m.number_or("Ps_MPa", c.Ps_MPa);
+    c.m_kg = m.number_or("m_kg", c.m_kg);
+    m.no_other_keys();
+    Scenario scratch = default_scenario();
+    apply_setting(scratch, "supply.pressure_MPa", c.Ps_MPa, m.where("Ps_MPa"));
+    if (!(c.m_kg > 0.0) || c.m_kg > 1000.0) throw Error(m.where("m_kg"), "expected 0 < m_kg <= 1000");
+    out.push_back(c);
+  }
+  return out;
+}
+
+ConditionSet read_conditions(Table& r) {
+  ConditionSet c;
+  c.maps = read_maps(r);
+  c.example = r.flag_or("example", false);
+  c.claims = read_claims(r);
+  return c;
+}
+
+MapSettings read_map_settings(Table& r) {
+  MapSettings m;
+  const toml::node* g = r.get("grid");
+  if (g != nullptr) {
+    const auto* a = g->as_array();
+    if (a == nullptr || a->size() != 2)
+      throw Error(r.where("grid"), "expected [\"circuit.S1_mm2=FROM:TO:STEP\", "
+                                   "\"circuit.S2_mm2=FROM:TO:STEP\"]");
+    for (const toml::node& item : *a) {
+      const auto axis = item.value<std::string>();
+      if (!axis) throw Error(r.where("grid"), "expected strings KEY=FROM:TO:STEP");
+      try {
+        m.axes.push_back(parse_grid_axis(*axis));
+      } catch (const Error& e) {
+        throw Error(r.where("grid"), e.what());
+      }
+    }
+    if (m.axes[0].key != "circuit.S1_mm2" || m.axes[1].key != "circuit.S2_mm2")
+      throw Error(r.where("grid"), "the maps are S1 x S2: circuit.S1_mm2 first, then circuit.S2_mm2");
+  }
+  m.repeats = r.count_or("repeats", m.repeats, 1, 1000);
+  m.duration_s = r.number_or("duration_s", m.duration_s);
+  if (!(m.duration_s > 0.0) || m.duration_s > 3600.0)
+    throw Error(r.where("duration_s"), "expected 0 < duration_s <= 3600");
+  m.adaptive = r.flag_or("adaptive", false);
+  return m;
+}
+
+ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, const std::string& dir) {
+  Table r(t, origin, "objective.");
+  ObjectiveSpec o;
+  const std::string kind = r.text("kind").value_or("");
+  if (kind == "records")
+    throw Error(r.where("kind"), "kind = \"records\" (measured records through fit) is not "
+                                 "supported yet; use \"claims\" or \"incidence_map\"");
+  if (kind != "claims" && kind != "incidence_map")
+    throw Error(r.where("kind"), "expected kind = \"claims\" or \"incidence_map\"");
+  o.kind = kind == "claims" ? ObjectiveKind::kClaims : ObjectiveKind::kIncidenceMap;
+  o.maps = read_map_settings(r);
+  if (o.kind == ObjectiveKind::kClaims) {
+    o.fit = read_conditions(r);
+    o.example_record_s = r.number_or("example_record_s", o.example_record_s);
+    if (!(o.example_record_s > kExampleSettle_s) || o.example_record_s > 3600.0)
+      throw Error(r.where("example_record_s"), "expected 2 < example_record_s <= 3600 (the first 2 s settle)");
+    o.example_model_exponent = r.flag_or("example_model_exponent", false);
+    if (o.fit.claims.empty()) throw Error(r.where("claims"), "name at least one claim to fit");
+  } else {
+    const auto file = r.text("file");
+    if (!file || file->empty()) throw Error(r.where("file"), "needs file = \"measured_map.csv\"");
+    o.measured_map = (file->front() == '/' || dir.empty()) ? *file : dir + "/" + *file;
+    o.stick_slip_weight = r.number_or("stick_slip_weight", 1.0);
+    o.chaos_weight = r.number_or("chaos_weight", 1.0);
+    if (!(o.stick_slip_weight >= 0.0) || !(o.chaos_weight >= 0.0) ||
+        !(o.stick_slip_weight + o.chaos_weight > 0.0))
+      throw Error(r.where("chaos_weight"), "the weights must be >= 0 and not both 0");
+  }
+  r.no_other_keys();
+  return o;
+}
+
+OptimizerSpec read_optimizer(const toml::table& t, const std::string& origin) {
+  Table r(t, origin, "optimizer.");
+  OptimizerSpec o;
+  o.algorithm = r.text("algorithm").value_or(o.algorithm);
+  o.population = r.count_or("population", o.population, 0, 1e6);
+  o.max_evaluations = r.count_or("max_evaluations", o.max_evaluations, 0, 1e7);
+  o.seed = r.count_or("seed", o.seed, 0, 4294967295.0);
+  o.sigma0 = r.number_or("sigma0", o.sigma0);
+  r.no_other_keys();
+  try {
+    o.validate();
+  } catch (const Error& e) {
+    throw Error(r.where(e.where()), e.what());
+  }
+  return o;
+}
+
+}  // namespace
+
+double FreeParameter::value(double u) const {
+  u = std::clamp(u, 0.0, 1.0);
+  if (log_scale) return std::exp(std::log(lower) + u * (std::log(upper) - std::log(lower)));
+  return lower + u * (upper - lower);
+}
+
+void OptimizerSpec::validate() const {
+  if (algorithm != "cmaes" && algorithm != "xnes")
+    throw Error("algorithm", "expected \"cmaes\" or \"xnes\" (pagmo2), got \"" + algorithm + "\"");
+  // pagmo's CMA-ES and xNES need at least 5 individuals.
+  if (population < 5 || population > 10000)
+    throw Error("population", fmt::format("expected 5 to 10000, got {}", population));
+  if (max_evaluations < 2 * population)
+    throw Error("max_evaluations", fmt::format("expected at least two populations ({}), got {}",
+                                               2 * population, max_evaluations));
+  if (seed > 4294967295ULL) throw Error("seed", "expected 0 to 4294967295");
+  if (!(sigma0 > 0.0) || sigma0 > 1.0)
+    throw Error("sigma0", fmt::format("expected 0 < sigma0 <= 1, got {}", sigma0));
+}
+
+std::size_t OptimizerSpec::generations() const { return max_evaluations / population - 1; }
+
+CalibrationSpec parse_calibration_spec(const std::string& text, const std::string& origin) {
+  toml::table doc;
+  try {
+    doc = toml::parse(text, origin);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw Error(fmt::format("{}:{}:{}", origin, b.line, b.column), std::string(e.description()));
+  }
+  CalibrationSpec s;
+  s.path = origin;
+  const auto slash = origin.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "" : origin.substr(0, slash);
+  for (const auto& [k, node] : doc) {
+    const std::string key(k.str());
+    if (key != "free" && key != "fixed" && key != "objective" && key != "predict" && key != "optimizer")
+      throw Error(at(origin, node, key), "unknown table; expected [[free]], [fixed], [objective], "
+                                         "[predict] or [optimizer]");
+  }
+  s.base = default_scenario();
+  if (const auto* fixed = sub_table(doc, "fixed", origin)) apply_fixed(s.base, *fixed, "", origin);
+  if (const toml::node* free = doc.get("free")) {
+    const auto* a = free->as_array();
+    if (a == nullptr || !a->is_array_of_tables())
+      throw Error(at(origin, *free, "free"), "expected [[free]] entries");
+    for (const toml::node& item : *a) s.free.push_back(read_free(*item.as_table(), origin));
+  }
+  const auto* objective = sub_table(doc, "objective", origin);
+  if (objective == nullptr) throw Error(origin + ": objective", "the spec needs an [objective] table");
+  s.objective = read_objective(*objective, origin, dir);
+  if (const auto* predict = sub_table(doc, "predict", origin)) {
+    Table r(*predict, origin, "predict.");
+    s.predict = read_conditions(r);
+    r.no_other_keys();
+  }
+  if (const auto* opt = sub_table(doc, "optimizer", origin)) s.optimizer = read_optimizer(*opt, origin);
+  s.validate();
+  return s;
+}
+
+CalibrationSpec read_calibration_spec(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path, "cannot open the calibration spec");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_calibration_spec(text.str(), path);
+}
+
+}  // namespace pneumachaos

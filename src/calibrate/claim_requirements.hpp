@@ -1,0 +1,25 @@
+#pragma once
+// Which conditions each claim of the report needs (private to the calibrate module): a spec
+// that asks for a claim its conditions cannot score is refused before any run.
+
+#include <string>
+
+#include "pneumachaos/calibrate/calibration_spec.hpp"
+
+namespace pneumachaos::detail {
+
+/// The roles a map condition can take (the claims' ClaimInputs fields).
+bool is_map_role(const std::string& role);
+
+/// What `conditions` lack to score claim `id` ("" when nothing): a map role, the example, or
+/// an input calibrate does not compute (Fig. 2, the stability map, the linearized trends).
+std::string missing_for_claim(const std::string& id, const ConditionSet& conditions);
+
+/// FNV-1a of the text as 16 hex digits (a fingerprint stable across builds).
+std::string stable_hash(const std::string& text);
+
+}  // namespace pneumachaos::detail
+
+namespace pneumachaos {
+using detail::is_map_role;
+}

@@ -1,0 +1,38 @@
+#pragma once
+// Running a set of conditions on one scenario (private to the calibrate module): each map a
+// resumable sweep on the sweep engine's threads and MPI ranks (as reproduce runs its maps),
+// the example one record; together the inputs the report's claims read.
+
+#include <string>
+
+#include "pneumachaos/calibrate/calibration_spec.hpp"
+#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/sweep/sweep.hpp"
+
+namespace pneumachaos::detail {
+
+struct RunSettings {
+  std::size_t threads = 0;
+  std::uint64_t sweep_seed = 1;
+};
+
+/// The sweep of one map condition at `scenario` over the spec's grid.
+SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCondition& c);
+
+/// Runs every map of `conditions` into dir/<role> (resumed when there) and the example, and
+/// fills the claims' inputs. A scenario the model refuses or a run that fails leaves its inputs
+/// empty (the claims then are "not reproduced"); only an unusable directory throws.
+void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
+                    const ConditionSet& conditions, const std::string& dir,
+                    const RunSettings& settings, ClaimInputs& inputs);
+
+/// Runs one sweep quietly into dir (resumed when there).
+SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSettings& settings);
+
+/// Removes the map of `role` from the inputs.
+void clear_role(ClaimInputs& inputs, const std::string& role);
+
+/// This process's MPI rank (0 without MPI): only rank 0 writes calibrate's own files.
+bool is_writer_rank();
+
+}  // namespace pneumachaos::detail

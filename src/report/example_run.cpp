@@ -1,0 +1,64 @@
+#include "pneumachaos/report/example_run.hpp"
+
+#include <algorithm>
+
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/plant.hpp"
+#include "pneumachaos/report/claim_rules.hpp"
+
+namespace pneumachaos {
+
+ExampleRun run_example(const Scenario& base, double record_s, bool model_exponent) {
+  Scenario s = base;
+  s.run.duration_s = record_s;
+  ExampleRun e;
+  e.sim = simulate(Plant(s), s.run);
+  if (!e.sim.summary.ok()) throw Error("reproduce", "a simulation failed: " + e.sim.summary.message);
+  const auto& v_all = e.sim.series.channel("v").values;
+  e.settle = std::min(v_all.size(),
+                      static_cast<std::size_t>(kExampleSettle_s * e.sim.series.rate_Hz()));
+  e.v.assign(v_all.begin() + static_cast<std::ptrdiff_t>(e.settle), v_all.end());
+  e.analysis = analyze_series(e.v, e.sim.series.rate_Hz());
+  e.model.ok = false;  // not measured unless asked (the claims then leave it out)
+  if (model_exponent) {
+    // The model's exponent after 1 s of start-up over the rest of the record, which with the
+    // volumes following the piston ends at the stroke end (docs/notes/virtual_rig.md).
+    ModelLyapunovOptions lo;
+    lo.transient_s = 1.0;
+    lo.measure_s = record_s - lo.transient_s;
+    lo.until_terminal_event = true;
+    e.model = plant_lyapunov(Plant(base), base.run, lo);
+  }
+  return e;
+}
+
+void add_example_inputs(ClaimInputs& ci, const ExampleRun& run) {
+  const AnalysisResult& a = run.analysis;
+  const std::vector<double>& v = run.v;
+  const std::vector<double>& F = run.sim.series.channel("F_friction").values;
+  if (a.divergence.found_linear_region) {
+    ci.example_lambda = a.divergence.lambda_per_s;
+    // The claim tests the rise (3 sigma), as the verdict does: the slope's uncertainty
+    // (docs/notes/analysis.md "Divergence exponent's uncertainty").
+    ci.example_uncertainty = a.divergence.slope_uncertainty_per_s;
+  }
+  if (a.wolf_run) ci.example_wolf = a.wolf.lambda_per_s;
+  ci.example_chaotic = a.verdict.chaotic;
+  ci.example_regime = regime_name(a.verdict.regime);
+  ci.example_peak_share = a.spectrum.peak_share;
+  ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
+  // Low speed: up to a quarter of the example's largest speed.
+  const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+  ci.friction_slope_vmax = 0.25 * vmax;
+  const std::vector<double> F_settled(F.begin() + static_cast<std::ptrdiff_t>(run.settle), F.end());
+  ci.friction_line = low_speed_line(v, F_settled, ci.friction_slope_vmax);
+  ci.friction_loop = measure_friction_loop(v, F_settled, a.rate_Hz);
+  ci.fold_stretch = measure_fold_stretch(v, a.rate_Hz, a.dimension.dimension, a.delay.delay,
+                                         a.theiler);
+  if (run.model.ok) {
+    ci.example_model_lambda = run.model.lambda_per_s;
+    ci.example_model_uncertainty = run.model.uncertainty_per_s;
+  }
+}
+
+}  // namespace pneumachaos
