@@ -99,13 +99,15 @@ struct Row {
   double period = 0.0;       ///< dysts's characteristic period
   double lambda_dysts = 0.0;
   bool found = false;
-  double lambda = 0.0, uncertainty = 0.0;  ///< 1 / time unit; +-1.96 u is the 95 % interval
+  double lambda = 0.0;             ///< 1 / time unit
+  double low = 0.0, high = 0.0;    ///< the interval: +-1.96 u, or the local slopes' 10-90 %
+  bool from_slopes = false;        ///< no linear region: the local-slope estimate
   Regime regime = Regime::kUndetermined;
   double orbits = 0.0;  ///< orbits in the record (maxima spacing)
   [[nodiscard]] double error() const { return found ? lambda / truth - 1.0 : -1.0; }
   [[nodiscard]] bool within10() const { return found && std::abs(error()) <= 0.10; }
   [[nodiscard]] bool covered() const {
-    return found && std::abs(lambda - truth) <= 1.96 * uncertainty;
+    return found && low <= truth && truth <= high;
   }
 };
 
@@ -122,9 +124,12 @@ inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
   const Benettin span = benettin(s, static_cast<double>(n) / kPointsPerPeriod);
   Row row{s.name, n, long_run.lambda, span.lambda, long_run.spread, s.period,
           s.lambda_dysts};
-  row.found = r.divergence.found_linear_region;
-  row.lambda = r.divergence.lambda_per_s;
-  row.uncertainty = r.divergence.uncertainty_per_s;
+  const DivergenceResult& d = r.divergence;
+  row.found = d.found_linear_region || r.divergence_estimate;
+  row.from_slopes = !d.found_linear_region && r.divergence_estimate;
+  row.lambda = row.from_slopes ? d.local_slopes.median * rate : d.lambda_per_s;
+  row.low = row.from_slopes ? d.local_slopes.low * rate : row.lambda - 1.96 * d.uncertainty_per_s;
+  row.high = row.from_slopes ? d.local_slopes.high * rate : row.lambda + 1.96 * d.uncertainty_per_s;
   row.regime = r.verdict.regime;
   row.orbits = r.maxima_spacing_samples > 0 ? n / r.maxima_spacing_samples : 0.0;
   return row;
@@ -155,15 +160,15 @@ inline const char* truth_name(Truth t) {
 inline std::string format_row(const Row& r) {
   return fmt::format("{:<20} {:>6} {:>9} {:>9.4f} {:>9.4f} {:>9.4f} {:>9} {:>8} {:>7} {:>5} {:>6.0f}  {}",
                      r.name, r.samples, truth_name(truth_class(r)), r.truth, r.span, r.lambda_dysts,
-                     r.found ? fmt::format("{:.4f}", r.lambda) : "-",
-                     r.found ? fmt::format("{:.4f}", 1.96 * r.uncertainty) : "-",
+                     r.found ? fmt::format("{}{:.4f}", r.from_slopes ? "~" : "", r.lambda) : "-",
+                     r.found ? fmt::format("{:.4f}", 0.5 * (r.high - r.low)) : "-",
                      r.found ? fmt::format("{:+.0f}%", 100.0 * r.error()) : "-",
                      r.covered() ? "yes" : "no", r.orbits, regime_name(r.regime));
 }
 
 inline std::string table_header() {
   return fmt::format("{:<20} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>5} {:>6}  {}",
-                     "system", "N", "class", "truth", "span", "dysts", "ours", "95%+-", "error", "cov", "orbits",
+                     "system", "N", "class", "truth", "span", "dysts", "ours", "95%half", "error", "cov", "orbits",
                      "verdict");
 }
 

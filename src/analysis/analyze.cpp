@@ -177,6 +177,31 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
 }
 
+// What the divergence curve measured. Without a linear region, a deterministic record (the
+// local-constant predictor beats the linear one) whose curve still rises gets the spread of its
+// local slopes as a wide estimate (issue 34: BurkeShaw's curve bends all the way, its slope
+// falling from 3.5 to 0 /time, with the flow's exponent 2.3 inside; docs/notes/
+// exponent_validation.md).
+void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResult& r) {
+  const DivergenceResult& d = r.divergence;
+  if (d.found_linear_region) {
+    r.divergence_status = fmt::format("linear region {}..{} samples", d.fit_first, d.fit_last);
+    return;
+  }
+  r.divergence_status =
+      "no rising linear region: no exponential divergence, or the record is too short";
+  const bool deterministic = r.prediction.computed &&
+                             r.prediction.ratio() <= o.verdict.max_prediction_ratio;
+  r.divergence_estimate = deterministic && d.local_slopes.found && d.local_slopes.median > 0.0;
+  if (!r.divergence_estimate) return;
+  r.divergence_status = fmt::format(
+      "no rising linear region; the curve rises without one straight stretch (a deterministic "
+      "record): its one-orbit local slopes over the rise give {:.4g} 1/s, 10-90 % {:.4g} .. "
+      "{:.4g} (a wide estimate, not read by the verdict)",
+      d.local_slopes.median * rate_Hz, d.local_slopes.low * rate_Hz,
+      d.local_slopes.high * rate_Hz);
+}
+
 void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
                    AnalysisResult& r) {
   DivergenceOptions d;
@@ -189,11 +214,7 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   d.slope_spacing =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
   r.divergence = divergence_exponent(x, rate_Hz, d);
-  r.divergence_status =
-      r.divergence.found_linear_region
-          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
-                        r.divergence.fit_last)
-          : "no rising linear region: no exponential divergence, or the record is too short";
+  describe_divergence(rate_Hz, o, r);
   if (o.wolf) run_wolf(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;
