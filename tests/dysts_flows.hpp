@@ -185,6 +185,12 @@ inline Rhs quadratic_3d_more(const std::string& n, const Params& p) {
       d = {-a * x[0] + b * x[1] - x[1] * x[2], x[0], -x[2] + x[1] * x[1]};
     };
   }
+  return nullptr;
+}
+
+// And more: Sakarya's family, jerk-like quadratics, the laser model.
+inline Rhs quadratic_3d_last(const std::string& n, const Params& p) {
+  const auto P = [&](const char* k) { return param(p, k); };
   if (n == "Sakarya" || n == "LiuChen") {
     const double a = P("a"), b = P("b"), c = P("c"), h = P("h"), pp = P("p"), q = P("q"),
                  r = P("r"), s = P("s");
@@ -372,8 +378,8 @@ inline Rhs sprott(const std::string& n, const Params& p) {
 }
 
 inline Rhs vector_field(const System& s) {
-  for (const auto make : {lorenz_like, four_dimensional, quadratic_3d, quadratic_3d_more, jerk,
-                          other, sprott}) {
+  for (const auto make : {lorenz_like, four_dimensional, quadratic_3d, quadratic_3d_more,
+                          quadratic_3d_last, jerk, other, sprott}) {
     if (Rhs r = make(s.name, s.parameters)) return r;
   }
   throw std::runtime_error("dysts: no right-hand side for " + s.name);
