@@ -205,5 +205,51 @@ TEST(Regime, StochasticSaysWhatItMeans) {
   EXPECT_NE(evidence_text(v).find("it does not say the source is random"), std::string::npos);
 }
 
+// Issue 34: a sharp relaxation oscillator repeats itself over 90 % of its record while the 0-1
+// test, misled by its sharp edges, reads K = 0.93; without a positive exponent a record that
+// repeats itself is periodic whatever K says.
+TEST(Regime, RepeatingRecordWithoutExponentIsPeriodicWhateverTheZeroOneTest) {
+  RegimeEvidence e = irregular_evidence();
+  e.zero_one_K = 0.93;
+  e.zero_one_q25 = 0.9;
+  e.zero_one_q75 = 0.95;
+  e.surrogate_rejected = e.surrogate_more_predictable = true;  // deterministic
+  e.prediction_nonlinear = 0.1;
+  e.repetition.run = true;
+  e.repetition.share = 0.9;
+  e.repetition.repeats = true;
+  EXPECT_EQ(decide_regime(e).regime, Regime::kPeriodic) << evidence_text(decide_regime(e));
+  e.repetition.repeats = false;  // the same record without the repeat: not periodic
+  EXPECT_NE(decide_regime(e).regime, Regime::kPeriodic);
+  // ...and with a positive exponent the repeat has to veto it first (it does not here: the
+  // mismatch grows at the exponent's rate), so the record stays chaotic.
+  e.repetition.repeats = true;
+  e.repetition.growth_per_s = 10.0;
+  e.lyapunov_found = true;
+  e.lyapunov_per_s = 5.0;
+  e.lyapunov_slope_uncertainty_per_s = 0.5;
+  EXPECT_EQ(decide_regime(e).regime, Regime::kChaotic);
+}
+
+// Issue 34: an Ornstein-Uhlenbeck record sampled at 1 kHz leaves the 0-1 test 28 points after
+// down-sampling, and "stochastic" required it: undetermined. The surrogates keep the linear
+// null, the predictor finds nothing, the spectrum is broadband and the autocorrelation dies:
+// stochastic from the other evidence.
+TEST(Regime, StochasticWithoutTheZeroOneTestFromTheOtherEvidence) {
+  RegimeEvidence e = irregular_evidence();
+  e.zero_one_run = false;
+  e.zero_one_note = "not run: 28 points after down-sampling";
+  e.surrogate_rank = 20;
+  e.broadband_share = 0.8;
+  e.late_acf = 0.05;
+  EXPECT_EQ(decide_regime(e).regime, Regime::kStochastic) << evidence_text(decide_regime(e));
+  e.surrogate_run = false;  // without the calibrated test against linear noise: not enough
+  EXPECT_EQ(decide_regime(e).regime, Regime::kUndetermined);
+  e.surrogate_run = true;
+  e.late_acf = 0.8;  // a persisting autocorrelation is no noise's
+  e.broadband_share = 0.1;
+  EXPECT_NE(decide_regime(e).regime, Regime::kStochastic);
+}
+
 }  // namespace
 }  // namespace pneumachaos

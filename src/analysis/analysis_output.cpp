@@ -217,6 +217,18 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
        "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
        "fit window, segments"}};
   j["lyapunov"]["divergence"]["status"] = r.divergence_status;
+  // Without a linear region, a deterministic record's wide estimate (analyze.hpp
+  // divergence_estimate): a value always with its range, never a range alone.
+  const SlopeSpread& ls = r.divergence.local_slopes;
+  j["lyapunov"]["divergence"]["without_linear_region"] =
+      r.divergence_estimate
+          ? nlohmann::json{{"value", number(ls.median * r.rate_Hz)},
+                           {"low", number(ls.low * r.rate_Hz)},
+                           {"high", number(ls.high * r.rate_Hz)},
+                           {"unit", "1/s"},
+                           {"method", "median and 10-90 % range of the one-orbit local slopes "
+                                      "over the curve's rise"}}
+          : nlohmann::json(nullptr);
   // The exponent fitted on each contiguous segment of the record (docs/notes/analysis.md
   // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
   std::vector<double> segments;

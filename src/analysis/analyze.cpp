@@ -177,6 +177,37 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
 }
 
+// What the divergence curve measured. Without a linear region, a deterministic record (the
+// local-constant predictor beats the linear one) whose curve still rises gets the spread of its
+// local slopes as a wide estimate (issue 34: BurkeShaw's curve bends all the way, its slope
+// falling from 3.5 to 0 /time, with the flow's exponent 2.3 inside; docs/notes/
+// exponent_validation.md) unless the verdict found it regular or steady: on a torus the
+// separation grows like a power of time, which a log curve also shows as a rise (dysts's
+// HenonHeiles read 0.035 /time against 0.0005).
+void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResult& r) {
+  const DivergenceResult& d = r.divergence;
+  if (d.found_linear_region) {
+    r.divergence_status = fmt::format("linear region {}..{} samples", d.fit_first, d.fit_last);
+    return;
+  }
+  r.divergence_status =
+      "no rising linear region: no exponential divergence, or the record is too short";
+  const bool deterministic = r.prediction.computed &&
+                             r.prediction.ratio() <= o.verdict.max_prediction_ratio;
+  const Regime v = r.verdict.regime;
+  const bool regular =
+      v == Regime::kPeriodic || v == Regime::kQuasiPeriodic || v == Regime::kSteady;
+  r.divergence_estimate =
+      deterministic && !regular && d.local_slopes.found && d.local_slopes.median > 0.0;
+  if (!r.divergence_estimate) return;
+  r.divergence_status = fmt::format(
+      "no rising linear region; the curve rises without one straight stretch (a deterministic "
+      "record): its one-orbit local slopes over the rise give {:.4g} 1/s, 10-90 % {:.4g} .. "
+      "{:.4g} (a wide estimate, not read by the verdict)",
+      d.local_slopes.median * rate_Hz, d.local_slopes.low * rate_Hz,
+      d.local_slopes.high * rate_Hz);
+}
+
 void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
                    AnalysisResult& r) {
   DivergenceOptions d;
@@ -189,11 +220,6 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   d.slope_spacing =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
   r.divergence = divergence_exponent(x, rate_Hz, d);
-  r.divergence_status =
-      r.divergence.found_linear_region
-          ? fmt::format("linear region {}..{} samples", r.divergence.fit_first,
-                        r.divergence.fit_last)
-          : "no rising linear region: no exponential divergence, or the record is too short";
   if (o.wolf) run_wolf(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;
@@ -240,6 +266,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
   note_lines(r);
   r.verdict = decide_regime(e, o.verdict);
+  describe_divergence(rate_Hz, o, r);
   return r;
 }
 

@@ -65,4 +65,27 @@ LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacin
   return best;
 }
 
+SlopeSpread rising_slopes(const std::vector<double>& y, std::size_t w) {
+  SlopeSpread r;
+  if (y.size() < 2 || w == 0) return r;
+  const double top = *std::max_element(y.begin(), y.end());
+  const double reach = y.front() + 0.9 * (top - y.front());
+  std::size_t end = 0;
+  while (end < y.size() && y[end] < reach) ++end;
+  std::vector<double> slopes;
+  for (std::size_t k = 0; k + w <= end && k + w < y.size(); ++k) {
+    slopes.push_back((y[k + w] - y[k]) / static_cast<double>(w));
+  }
+  if (slopes.size() < 3) return r;
+  std::sort(slopes.begin(), slopes.end());
+  const auto at = [&](double q) {
+    return slopes[static_cast<std::size_t>(q * static_cast<double>(slopes.size() - 1) + 0.5)];
+  };
+  r.found = true;
+  r.median = at(0.5);
+  r.low = at(0.1);
+  r.high = at(0.9);
+  return r;
+}
+
 }  // namespace pneumachaos

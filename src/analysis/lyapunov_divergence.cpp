@@ -191,6 +191,8 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   r.intercept = region.intercept;
   r.lambda_per_s = region.slope * rate_Hz;
   uncertainties(sums, spacing, o, rate_Hz, r);
+  // One orbit (the spacing is half of one) so that the orbital modulation averages out.
+  if (!region.found) r.local_slopes = rising_slopes(r.curve, 2 * spacing);
   return r;
 }
 

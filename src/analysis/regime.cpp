@@ -15,6 +15,7 @@ struct Criteria {
   bool clearly_regular = false;               ///< 0-1 test: even the upper quartile is low
   bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
   bool persistent = false, concentrated = false, second_line = false;
+  bool repeats = false;  ///< the record repeats itself over most of its length
 };
 
 class Notes {
@@ -54,6 +55,7 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
     note.info("self-repetition: " + s.reason);
     return;
   }
+  c.repeats = s.repeats;
   const std::string found = fmt::format(
       "record repeats itself: at lag {:.4g} s (drifting {:+.3g} s) the one-period windows' "
       "mismatch stays <= {} of the attractor's size over {:.3g} s = {:.0f} % of the record "
@@ -152,14 +154,19 @@ void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
           : std::string("second spectral line: none"));
 }
 
-Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run) {
+Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run, bool surrogate_run) {
   const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
-  // concentrated spectrum and a persisting autocorrelation must both say so.
+  // concentrated spectrum and a persisting autocorrelation must both say so. A record that
+  // repeats itself over most of its length is regular whatever K says: sharp relaxation
+  // edges read K ~ 0.9 (issue 34).
   const bool regular = !c.steady && !c.positive &&
-                       (zero_one_run ? c.regular_K : c.concentrated && c.persistent);
-  const bool stochastic =
-      !c.steady && !regular && !c.deterministic && c.noise_like && c.diffusive;
+                       (c.repeats || (zero_one_run ? c.regular_K : c.concentrated && c.persistent));
+  // Irregular: K high; without the 0-1 test (too few points after down-sampling), a broadband
+  // spectrum and a dying autocorrelation, but only where the surrogates calibrated the null.
+  const bool irregular =
+      zero_one_run ? c.diffusive : surrogate_run && !c.concentrated && !c.persistent;
+  const bool stochastic = !c.steady && !regular && !c.deterministic && c.noise_like && irregular;
   if (chaotic) return Regime::kChaotic;
   if (v.stick_slip) return Regime::kStickSlip;
   if (c.steady) return Regime::kSteady;
@@ -197,10 +204,11 @@ std::string verdict_rule(const VerdictOptions&) {
          "local-constant predictor more than the linear one (where run; else prediction ratio "
          "low); chaotic = exponential divergence AND deterministic AND "
          "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged; else "
-         "steady; else regular = no exponential divergence AND (0-1 K low, where run; else a "
-         "concentrated spectrum AND a persisting autocorrelation): quasi-periodic with a second "
-         "incommensurate line, periodic without; else stochastic = NOT deterministic AND "
-         "(surrogates keep the linear null, where run) AND 0-1 K high (the test must have run); "
+         "steady; else regular = no exponential divergence AND (the record repeats itself OR 0-1 K "
+         "low, where run; else a concentrated spectrum AND a persisting autocorrelation): "
+         "quasi-periodic with a second incommensurate line, periodic without; else stochastic = "
+         "NOT deterministic AND (surrogates keep the linear null, where run) AND (0-1 K high, "
+         "where run; else surrogates run AND a broadband spectrum AND a dying autocorrelation); "
          "else undetermined";
 }
 
@@ -233,7 +241,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     note_determinism(e, o, note, c);
     note_regularity(e, o, note, c);
   }
-  v.regime = combine(c, v, e.zero_one_run);
+  v.regime = combine(c, v, e.zero_one_run, e.surrogate_run);
   v.chaotic = v.regime == Regime::kChaotic;
   // "stochastic" is what the tests could establish, not where the record came from: a
   // noise-free simulation can earn it (issue 33), so the verdict says what it means.

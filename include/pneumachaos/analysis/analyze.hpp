@@ -58,6 +58,9 @@ struct AnalysisResult {
   SurrogateTest surrogate;
   SpectralLines lines;
   std::string divergence_status;  ///< what the divergence curve measured, or why nothing
+  /// No linear region, but a deterministic record (the prediction test) whose curve rises:
+  /// divergence.local_slopes is reported as a wide estimate (not read by the verdict).
+  bool divergence_estimate = false;
   bool wolf_run = false;
   WolfResult wolf;
   std::string wolf_status;  ///< empty: Wolf not requested; else what it measured or why not

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "pneumachaos/analysis/slope_spread.hpp"
+
 namespace pneumachaos {
 
 struct LineFit {
@@ -26,5 +28,12 @@ struct LinearRegion {
 /// span at least three segments. This follows the idea of ChaosTools.jl's linear_region.
 LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
                                 double tolerance);
+
+/// The spread of a curve's local slopes over its rising part, for a curve without a linear
+/// region (docs/notes/exponent_validation.md): slopes (y[k + w] - y[k]) / w for every k whose
+/// window ends before the curve first covers 90 % of its rise from y[0] to its maximum. With w
+/// one orbit, a modulation at the orbital period averages out of each slope. found: at least
+/// three slopes.
+SlopeSpread rising_slopes(const std::vector<double>& y, std::size_t w);
 
 }  // namespace pneumachaos

@@ -13,6 +13,8 @@
 #include <span>
 #include <vector>
 
+#include "pneumachaos/analysis/slope_spread.hpp"
+
 namespace pneumachaos {
 
 struct DivergenceOptions {
@@ -61,6 +63,10 @@ struct DivergenceResult {
   std::size_t references = 0;
   bool aligned = false;
   bool found_linear_region = false;  ///< false: no rising region (not chaotic, or too short)
+  /// Without a linear region: the spread of the curve's one-orbit local slopes over its rising
+  /// part (per step; rising_slopes). A wide estimate for a curve that rises without one straight
+  /// stretch; the verdict does not read it (docs/notes/exponent_validation.md).
+  SlopeSpread local_slopes;
 };
 
 DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
