@@ -88,8 +88,11 @@ TEST(ClaimRules, IndicesOfTheExample) {
     sine[k] = std::cos(2 * M_PI * 6.3 * k / 100.0);
     decaying[k] = std::exp(-5.0 * k / 100.0) * std::cos(2 * M_PI * 6.3 * k / 100.0);
   }
-  EXPECT_FALSE(acf_converged(acf_envelope_after(sine, 100.0, 1.0)).passes());
-  EXPECT_TRUE(acf_converged(acf_envelope_after(decaying, 100.0, 1.0)).passes());
+  EXPECT_FALSE(acf_converged(*acf_envelope_after(sine, 100.0, 1.0)).passes());
+  EXPECT_TRUE(acf_converged(*acf_envelope_after(decaying, 100.0, 1.0)).passes());
+  // An ACF that stops short of 1 s says nothing: no envelope, not a passing 0.
+  const std::vector<double> short_acf(sine.begin(), sine.begin() + 60);
+  EXPECT_FALSE(acf_envelope_after(short_acf, 100.0, 1.0).has_value());
   EXPECT_FALSE(spectrum_without_dominant_peak(0.31).passes());
   EXPECT_NEAR(spectrum_without_dominant_peak(0.125).margin, 0.5, 1e-12);
   EXPECT_TRUE(positive_exponent(3.0, 0.5).passes());

@@ -21,10 +21,12 @@ RuleResult both(const RuleResult& a, const RuleResult& b) {
   return r;
 }
 
-double acf_envelope_after(const std::vector<double>& r, double rate_Hz, double after_s) {
+std::optional<double> acf_envelope_after(const std::vector<double>& r, double rate_Hz,
+                                         double after_s) {
+  const auto first = static_cast<std::size_t>(after_s * rate_Hz);
+  if (first >= r.size()) return std::nullopt;  // no lag that long: nothing to judge
   double m = 0.0;
-  for (auto k = static_cast<std::size_t>(after_s * rate_Hz); k < r.size(); ++k)
-    m = std::max(m, std::abs(r[k]));
+  for (std::size_t k = first; k < r.size(); ++k) m = std::max(m, std::abs(r[k]));
   return m;
 }
 
