@@ -167,6 +167,57 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
   return out;
 }
 
+namespace {
+
+// The divergence exponent with its fit, its segments and, without a linear region, the wide
+// estimate.
+nlohmann::json divergence_json(const AnalysisResult& r) {
+  nlohmann::json d = {
+      {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
+      // Without a linear region there is no exponent, so no uncertainty of it either (the
+      // spread of placeholder zeros is no measurement).
+      {"uncertainty",
+       r.divergence.found_linear_region ? number(r.divergence.uncertainty_per_s) : nullptr},
+      {"slope_uncertainty",
+       r.divergence.found_linear_region ? number(r.divergence.slope_uncertainty_per_s) : nullptr},
+      {"unit", "1/s"},
+      {"value_bits",
+       r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},
+      {"unit_bits", "bits/s"},
+      {"found_linear_region", r.divergence.found_linear_region},
+      {"fit",
+       {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
+        {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
+      {"aligned_in_time", r.divergence.aligned},
+      {"method",
+       "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
+       "fit window, segments"}};
+  d["status"] = r.divergence_status;
+  // Without a linear region, a deterministic record's wide estimate (analyze.hpp
+  // divergence_estimate): a value always with its range, never a range alone.
+  const SlopeSpread& ls = r.divergence.local_slopes;
+  d["without_linear_region"] =
+      r.divergence_estimate
+          ? nlohmann::json{{"value", number(ls.median * r.rate_Hz)},
+                           {"low", number(ls.low * r.rate_Hz)},
+                           {"high", number(ls.high * r.rate_Hz)},
+                           {"unit", "1/s"},
+                           {"method", "median and 10-90 % range of the one-orbit local slopes "
+                                      "over the curve's rise"}}
+          : nlohmann::json(nullptr);
+  // The exponent fitted on each contiguous segment of the record (docs/notes/analysis.md
+  // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
+  std::vector<double> segments;
+  for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);
+  d["segments"] = {
+      {"values", segments},
+      {"unit", "1/s"},
+      {"without_own_linear_region", r.divergence.segments_without_region}};
+  return d;
+}
+
+}  // namespace
+
 std::string analysis_json(const AnalysisResult& r, const std::string& source,
                           const std::string& name, const std::string& unit) {
   nlohmann::json j;
@@ -196,47 +247,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                     {"cao_E2", r.dimension.E2},
                     {"period", quantity(r.period_samples / r.rate_Hz, "s")},
                     {"maxima_spacing", quantity(r.maxima_spacing_samples / r.rate_Hz, "s")}};
-  j["lyapunov"]["divergence"] = {
-      {"value", r.divergence.found_linear_region ? number(r.divergence.lambda_per_s) : nullptr},
-      // Without a linear region there is no exponent, so no uncertainty of it either (the
-      // spread of placeholder zeros is no measurement).
-      {"uncertainty",
-       r.divergence.found_linear_region ? number(r.divergence.uncertainty_per_s) : nullptr},
-      {"slope_uncertainty",
-       r.divergence.found_linear_region ? number(r.divergence.slope_uncertainty_per_s) : nullptr},
-      {"unit", "1/s"},
-      {"value_bits",
-       r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},
-      {"unit_bits", "bits/s"},
-      {"found_linear_region", r.divergence.found_linear_region},
-      {"fit",
-       {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
-        {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
-      {"aligned_in_time", r.divergence.aligned},
-      {"method",
-       "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
-       "fit window, segments"}};
-  j["lyapunov"]["divergence"]["status"] = r.divergence_status;
-  // Without a linear region, a deterministic record's wide estimate (analyze.hpp
-  // divergence_estimate): a value always with its range, never a range alone.
-  const SlopeSpread& ls = r.divergence.local_slopes;
-  j["lyapunov"]["divergence"]["without_linear_region"] =
-      r.divergence_estimate
-          ? nlohmann::json{{"value", number(ls.median * r.rate_Hz)},
-                           {"low", number(ls.low * r.rate_Hz)},
-                           {"high", number(ls.high * r.rate_Hz)},
-                           {"unit", "1/s"},
-                           {"method", "median and 10-90 % range of the one-orbit local slopes "
-                                      "over the curve's rise"}}
-          : nlohmann::json(nullptr);
-  // The exponent fitted on each contiguous segment of the record (docs/notes/analysis.md
-  // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
-  std::vector<double> segments;
-  for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);
-  j["lyapunov"]["divergence"]["segments"] = {
-      {"values", segments},
-      {"unit", "1/s"},
-      {"without_own_linear_region", r.divergence.segments_without_region}};
+  j["lyapunov"]["divergence"] = divergence_json(r);
   if (!r.wolf_status.empty()) {
     j["lyapunov"]["wolf"] = {{"value", r.wolf_run ? number(r.wolf.lambda_per_s) : nullptr},
                              {"status", r.wolf_status},
