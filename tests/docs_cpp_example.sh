@@ -2,7 +2,7 @@
 # docs_cpp_example.sh BUILD_DIR [CXX_FLAGS]: the guide's C++ example (docs/guide/examples) as a
 # user builds it: the build tree installed into a scratch prefix, the example configured with
 # find_package(pneumachaos), built and run. Its output must hold the stability verdict and the
-# record's regime (the example prints both).
+# record's regime, and the small map's counts (the example prints all three).
 set -euo pipefail
 build_dir=$1
 cxx_flags=${2:-}

@@ -1,11 +1,13 @@
-// Simulates the default scenario through the installed library and reports the record.
+// Simulates the default scenario through the installed library's one public header, set by
+// typed fields (SI units), and reports the record.
 #include <cstdio>
 
-#include "pneumachaos/model/scenario_toml.hpp"
-#include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/pneumachaos.hpp"
 
 int main() {
-  const pneumachaos::Scenario s = pneumachaos::build_scenario("", {"run.duration_s=2"});
+  pneumachaos::Scenario s = pneumachaos::default_scenario();
+  s.run.duration_s = 2.0;
+  s.validate();
   const pneumachaos::Plant plant(s);
   const auto r = pneumachaos::simulate(plant, s.run);
   std::printf("simulated %zu samples\n", r.series.size());

@@ -1,21 +1,22 @@
-// The guide's C++ example (docs/guide/cpp.md): one scenario, its linear stability, a
-// simulation and the chaos analysis of the piston velocity, through the installed library.
+// The guide's C++ example (docs/guide/cpp.md): one scenario set through its typed fields, its
+// linear stability, a simulation and the chaos analysis of the piston velocity, and a small
+// S1 x S2 sweep, through the installed library and its one public header.
 // Built and run by the test docs.cpp_example (tests/docs_cpp_example.sh).
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
-#include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/model/scenario_toml.hpp"
-#include "pneumachaos/simulate/simulate.hpp"
-#include "pneumachaos/stability/stability_analysis.hpp"
+#include "pneumachaos/pneumachaos.hpp"
+
+namespace pc = pneumachaos;
 
 int main() {
-  namespace pc = pneumachaos;
   try {
-    // The built-in virtual rig with two keys changed, as `--set` does on the command line
-    // (the first argument is a TOML file; empty: the built-in scenario).
-    const pc::Scenario scenario =
-        pc::build_scenario("", {"circuit.S2_mm2=0.05", "run.duration_s=5"});
+    // The built-in virtual rig with a narrow exhaust and a short record; SI units throughout.
+    pc::Scenario scenario = pc::default_scenario();
+    scenario.circuit.S2_m2 = 0.05e-6;  // 0.05 mm^2
+    scenario.run.duration_s = 5.0;
+    scenario.validate();  // throws pc::Error naming the key of a value out of range
     const pc::Plant plant(scenario);
 
     const pc::StabilityResult stability = pc::analyze_stability(plant);
@@ -32,7 +33,20 @@ int main() {
     std::printf("%zu samples at %.0f Hz: %s (stick-slip: %s)\n", analysis.samples,
                 analysis.rate_Hz, pc::regime_name(analysis.verdict.regime),
                 analysis.verdict.stick_slip ? "yes" : "no");
-    return 0;
+
+    // A 2 x 2 map over S1 x S2 (in mm^2, as the command line's --grid), one run per point.
+    pc::SweepSpec sweep;
+    sweep.base = scenario;
+    sweep.axes = {pc::parse_grid_axis("circuit.S1_mm2=2.45:2.70:0.25"),
+                  pc::parse_grid_axis("circuit.S2_mm2=0.05:0.35:0.30")};
+    sweep.repeats = 1;
+    pc::SweepOptions where;
+    where.out_dir = (std::filesystem::temp_directory_path() / "first_steps_sweep").string();
+    std::filesystem::remove_all(where.out_dir);
+    const pc::SweepSummary map = pc::run_sweep(sweep, where);
+    std::printf("map: %zu points, %zu with stick-slip, %zu failed runs\n", map.points,
+                map.stick_slip_points, map.failed);
+    return map.failed == 0 ? 0 : 3;
   } catch (const std::exception& e) {  // bad keys, values out of range: the message names them
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

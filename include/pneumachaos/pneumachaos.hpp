@@ -1,0 +1,26 @@
+#pragma once
+// The public C++ API in one include: scenarios and the plant, simulation and the model's own
+// exponent, the steady motion's stability, the chaos analysis of a record, measured records
+// and fits, S1 x S2 sweeps, the paper's report and calibration (docs/guide/cpp.md).
+
+#include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/analysis/regime.hpp"
+#include "pneumachaos/calibrate/calibrate.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/time_series.hpp"
+#include "pneumachaos/identify/fit.hpp"
+#include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/identify/friction_fits.hpp"
+#include "pneumachaos/identify/measured_record_csv.hpp"
+#include "pneumachaos/io/csv_reader.hpp"
+#include "pneumachaos/model/parameter_grid.hpp"
+#include "pneumachaos/model/plant.hpp"
+#include "pneumachaos/model/scenario.hpp"
+#include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/report/reproduce.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
+#include "pneumachaos/stability/stability_map.hpp"
+#include "pneumachaos/sweep/sweep.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
