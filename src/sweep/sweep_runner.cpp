@@ -20,8 +20,8 @@
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/sweep/grid_refinement.hpp"
-#include "sweep_outputs.hpp"
 #include "parallel_body.hpp"
+#include "sweep_outputs.hpp"
 #include "tsan_annotations.hpp"
 
 namespace pneumachaos {
@@ -164,6 +164,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
   // per task (grain 1), as runs differ in cost by an order of magnitude.
   const auto threads = static_cast<int>(thread_count(options.threads, pending.size(), dist));
   tbb::task_arena arena(threads);
+  // The orderings parallel_for guarantees, as ThreadSanitizer sees them (tsan_annotations.hpp).
   char handed_out = 0, handed_back = 0;
   detail::tsan_release(&handed_out);
   arena.execute([&] {
