@@ -3,17 +3,18 @@
 # prints the number of executions. Exits non-zero on a crash, a sanitizer report or a leak
 # (libFuzzer writes the offending input as crash-*/leak-* in the working directory).
 set -euo pipefail
-harness=$1 seeds=$2 corpus=$3 seconds=$4 max_len=${5:-8192} seed=${6:-0}
+harness=$1 seeds=$2 corpus=$3 seconds=$4 max_len=${5:-8192} seed=${6:-0} runs=${7:-0}
 mkdir -p "$corpus"
 cp -n "$seeds"/* "$corpus"/ 2>/dev/null || true
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 # seed 0: libFuzzer picks one (long campaigns); CI passes a fixed seed so that a run is
-# repeatable up to where the time limit cuts it.
-if ! "$harness" -seed="$seed" -max_total_time="$seconds" -max_len="$max_len" -timeout=20 -rss_limit_mb=4096 \
+# repeatable up to where the time limit cuts it. runs 0: no limit on the executions (-1).
+[ "$runs" -gt 0 ] || runs=-1
+if ! "$harness" -seed="$seed" -runs="$runs" -max_total_time="$seconds" -max_len="$max_len" -timeout=20 -rss_limit_mb=4096 \
     -print_final_stats=1 "$corpus" >"$log" 2>&1; then
   tail -n 60 "$log"
   exit 1
 fi
-runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)
-echo "fuzz: $runs executions, no crash ($(basename "$harness"), ${seconds} s)"
+executed=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)
+echo "fuzz: $executed executions, no crash ($(basename "$harness"), ${seconds} s)"

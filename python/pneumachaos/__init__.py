@@ -7,6 +7,7 @@ the GIL, so threads of a notebook keep running.
 
 import io
 import json
+import os
 import sys
 import time
 
@@ -193,6 +194,25 @@ def _print_progress():
     return show
 
 
+# The variables MPI launchers set (src/sweep/distribution.cpp reads the same ones to decide
+# that a sweep is distributed over ranks).
+_MPI_LAUNCHER_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK")
+
+
+def _refuse_under_mpi():
+    """A sweep in this module runs on threads of one process. Under mpirun every rank would
+    run the whole sweep into the same directory (two writers), and the MPI module that shares
+    runs between ranks belongs to the command line, not to the Python package, so the call is
+    refused before anything is written."""
+    launcher = next((v for v in _MPI_LAUNCHER_VARIABLES if v in os.environ), None)
+    if launcher is not None:
+        raise RuntimeError(
+            f"sweep: started under an MPI launcher ({launcher} is set): the Python module "
+            "runs a sweep on the threads of one process and cannot share it between MPI "
+            "ranks. Run Python without mpirun (threads=N uses N cores), or distribute the "
+            "sweep with the command line: mpirun -np N pneumachaos sweep ...")
+
+
 def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
           progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=None,
           model_measure_s=None, model_renormalize_s=None, adaptive=False, adaptive_step=4):
@@ -209,6 +229,7 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     points.csv's `inferred` column marks the points filled from their cell, not run."""
     if not out:
         raise ValueError("sweep: out: a directory for the results is required")
+    _refuse_under_mpi()
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
                         ("surrogates", surrogates), ("adaptive_step", adaptive_step)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:

@@ -3,6 +3,9 @@
 import json
 import math
 import os
+import shutil
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -200,3 +203,34 @@ def test_set_changes_in_place_and_with_value_copies():
     assert s.get("circuit.S2_mm2") == "0.35"
     assert s2.get("circuit.S2_mm2") == "1"
     assert s.set("circuit.S2_mm2", 0.5) is s
+
+
+def test_sweep_under_an_mpi_launcher_is_refused_by_name(tmp_path, monkeypatch):
+    """Under mpirun each rank would run the whole sweep into one directory: refused before
+    anything is written, naming the launcher's variable and what to do instead."""
+    monkeypatch.setenv("OMPI_COMM_WORLD_SIZE", "2")
+    with pytest.raises(RuntimeError, match=r"MPI launcher \(OMPI_COMM_WORLD_SIZE is set\).*"
+                                           r"mpirun -np N pneumachaos sweep"):
+        pc.sweep(grid=["circuit.S2_mm2=0.05:0.20:0.15"], repeats=1, out=str(tmp_path / "map"))
+    assert not (tmp_path / "map").exists()
+
+
+def test_the_module_under_mpirun(tmp_path):
+    """mpirun -np 2 python: both ranks import and simulate; a sweep is refused on both with
+    the message (a non-zero exit from the uncaught RuntimeError, not a crash)."""
+    mpirun = shutil.which("mpirun")
+    if mpirun is None:
+        pytest.skip("no mpirun")
+    script = ("import pneumachaos as pc\n"
+              "assert pc.simulate(duration_s=0.01).ok\n"
+              "print('simulated', flush=True)\n"
+              f"pc.sweep(grid=['circuit.S2_mm2=0.05:0.20:0.15'], repeats=1, out={str(tmp_path / 'map')!r})\n")
+    # Root in containers and more ranks than cores must be allowed explicitly.
+    run = subprocess.run([mpirun, "--allow-run-as-root", "--oversubscribe", "-np", "2",
+                          sys.executable, "-c", script],
+                         capture_output=True, text=True, timeout=120, check=False)
+    assert run.returncode != 0
+    assert run.stdout.count("simulated") == 2
+    # (mpirun may end the other rank as soon as one fails, before it prints.)
+    assert "sweep: started under an MPI launcher" in run.stderr, run.stderr
+    assert not (tmp_path / "map").exists()
