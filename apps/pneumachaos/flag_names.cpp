@@ -33,17 +33,16 @@ std::string where_as_typed(const std::string& where, const FlagNames& names) {
 }
 
 std::string message_as_typed(const Error& e, const FlagNames& names) {
-  const std::string what = e.what();
-  return where_as_typed(e.where(), names) + what.substr(e.where().size());
+  const std::string where = where_as_typed(e.where(), names);
+  return where.empty() ? e.message() : where + ": " + e.message();
 }
 
 void rethrow_with_flag(const Error& e, const FlagNames& names) {
   const std::string where = where_as_typed(e.where(), names);
   if (where == e.where()) throw;
-  // what() is "where: message"; keep the message, replace the place.
-  const std::string message = std::string(e.what()).substr(e.where().size() + 2);
-  if (dynamic_cast<const RunError*>(&e) != nullptr) throw RunError(where, message);
-  throw Error(where, message);
+  // Keep the message, replace the place.
+  if (dynamic_cast<const RunError*>(&e) != nullptr) throw RunError(where, e.message());
+  throw Error(where, e.message());
 }
 
 }  // namespace pneumachaos::cli

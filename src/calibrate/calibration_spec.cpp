@@ -283,7 +283,7 @@ OptimizerSpec read_optimizer(const toml::table& t, const std::string& origin) {
   try {
     o.validate();
   } catch (const Error& e) {
-    throw Error(r.where(e.where()), e.what());
+    throw Error(r.where(e.where()), e.message());
   }
   return o;
 }

@@ -4,6 +4,7 @@ namespace pneumachaos {
 
 Error::Error(std::string where, const std::string& message)
     : std::runtime_error(where.empty() ? message : where + ": " + message),
-      where_(std::move(where)) {}
+      where_(std::move(where)),
+      message_(message) {}
 
 }  // namespace pneumachaos

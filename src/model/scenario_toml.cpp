@@ -128,7 +128,7 @@ void validate_scenario(const Scenario& scenario, const SettingOrigins& origins) 
   } catch (const Error& e) {
     const auto it = origins.find(e.where());
     if (it == origins.end()) throw;
-    throw Error(it->second + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+    throw Error(it->second + ": " + e.where(), e.message());
   }
 }
 

@@ -13,9 +13,12 @@ class Error : public std::runtime_error {
  public:
   Error(std::string where, const std::string& message);
   [[nodiscard]] const std::string& where() const noexcept { return where_; }
+  /// What was wrong, without the place: what() is where() + ": " + message().
+  [[nodiscard]] const std::string& message() const noexcept { return message_; }
 
  private:
   std::string where_;
+  std::string message_;
 };
 
 /// Raised when a run with valid input cannot complete: an output that cannot be written (a
