@@ -1,7 +1,7 @@
 // The guide's C++ example (docs/guide/cpp.md): one scenario set through its typed fields, its
 // linear stability, a simulation and the chaos analysis of the piston velocity, and a small
 // S1 x S2 sweep, through the installed library and its one public header.
-// Built and run by the test docs.cpp_example (tests/docs_cpp_example.sh).
+// Built and run by the test docs.cpp_example (tests/consumer/run.sh).
 #include <cstdio>
 #include <exception>
 #include <filesystem>
