@@ -10,6 +10,9 @@
 #include "pneumachaos/identify/friction_fits.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
+#include "pneumachaos/analysis/local_stretching.hpp"
+#include "pneumachaos/analysis/prediction_error.hpp"
+#include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"
 
 namespace pneumachaos {
@@ -98,6 +101,23 @@ TEST(OptionsValidation, SeriesReadingAndStabilitySettingsAreNamed) {
   StabilityOptions s;
   s.equilibrium.scan_points = 2;  // the nested options are checked too
   EXPECT_NE(message_of(s).find("scan_points"), std::string::npos);
+}
+
+TEST(OptionsValidation, AnalysisStagesAndTheReportAreNamed) {
+  EXPECT_EQ(message_of(StretchingOptions{}), "");
+  StretchingOptions st;
+  st.horizon = 0;
+  EXPECT_NE(message_of(st).find("stretching horizon"), std::string::npos);
+  EXPECT_EQ(message_of(PredictionOptions{}), "");
+  PredictionOptions p;
+  p.neighbours = 0;
+  EXPECT_NE(message_of(p).find("prediction neighbours"), std::string::npos);
+  const std::vector<double> x(400, 1.0);
+  EXPECT_THROW(prediction_errors(x, p), Error);  // checked before the record is read
+  EXPECT_EQ(message_of(ReproduceOptions{}), "");
+  ReproduceOptions r;
+  r.out_dir.clear();
+  EXPECT_NE(message_of(r).find("output directory"), std::string::npos);
 }
 
 }  // namespace

@@ -32,15 +32,22 @@ void check(std::span<const double> x, const std::vector<double>& edges,
   if (edges.size() < 2 || !std::is_sorted(edges.begin(), edges.end()) ||
       std::adjacent_find(edges.begin(), edges.end()) != edges.end())
     throw Error("band edges", "at least two strictly increasing values are needed");
-  if (o.horizon == 0 || o.stride == 0) throw Error("stretching", "horizon and stride must be >= 1");
+  o.validate();
   const std::size_t span = (o.dimension - 1) * o.delay + o.horizon;
-  if (o.dimension == 0 || o.delay == 0 || x.size() <= span + 2 * o.theiler + 2)
+  if (x.size() <= span + 2 * o.theiler + 2)
     throw Error("stretching", fmt::format("{} samples are too few for dimension {}, delay {} and "
                                           "a horizon of {} steps",
                                           x.size(), o.dimension, o.delay, o.horizon));
 }
 
 }  // namespace
+
+void StretchingOptions::validate() const {
+  if (dimension == 0) throw Error("stretching dimension", "must be at least 1");
+  if (delay == 0) throw Error("stretching delay", "must be at least 1");
+  if (horizon == 0) throw Error("stretching horizon", "must be at least 1 step");
+  if (stride == 0) throw Error("stretching stride", "must be at least 1");
+}
 
 std::vector<BandStretching> band_stretching(std::span<const double> x, double rate_Hz,
                                             const std::vector<double>& edges,

@@ -8,6 +8,7 @@
 
 #include "pneumachaos/analysis/delay_embedding.hpp"
 #include "pneumachaos/analysis/series_statistics.hpp"
+#include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -74,7 +75,15 @@ double nonlinear_prediction_error(std::span<const double> x, const PredictionOpt
   return count > 0 ? std::sqrt(sse / static_cast<double>(count)) / sd : -1.0;
 }
 
+void PredictionOptions::validate() const {
+  if (dimension == 0) throw Error("prediction dimension", "must be at least 1");
+  if (delay == 0) throw Error("prediction delay", "must be at least 1");
+  if (neighbours == 0) throw Error("prediction neighbours", "must be at least 1");
+  if (max_references == 0) throw Error("prediction max_references", "must be at least 1");
+}
+
 PredictionErrors prediction_errors(std::span<const double> x, const PredictionOptions& o) {
+  o.validate();
   PredictionErrors r;
   r.horizon = horizon_of(o);
   const double nonlinear = nonlinear_prediction_error(x, o);

@@ -132,6 +132,7 @@ std::vector<double> iaaft_surrogate(std::span<const double> x, std::uint64_t see
 SurrogateTest surrogate_test(std::span<const double> x, const PredictionOptions& prediction,
                              const SurrogateOptions& o) {
   o.validate();
+  prediction.validate();
   SurrogateTest t;
   if (o.count == 0) {
     t.reason = "not run (0 surrogates requested)";

@@ -332,7 +332,12 @@ class ReportBuilder {
 
 }  // namespace
 
+void ReproduceOptions::validate() const {
+  if (out_dir.empty()) throw Error("output directory", "a directory for the report is required");
+}
+
 ReproduceResult reproduce(const ReproduceOptions& o) {
+  o.validate();
   check_out_dir(o.out_dir);
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir + "/figures", ec);

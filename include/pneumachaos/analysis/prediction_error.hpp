@@ -17,6 +17,8 @@ struct PredictionOptions {
   std::size_t horizon = 0;         ///< steps ahead; 0: the delay
   std::size_t neighbours = 4;      ///< averaged by the local-constant predictor
   std::size_t max_references = 500;  ///< predicted points, spread over the record
+  /// Throws Error naming the field that is out of range.
+  void validate() const;
 };
 
 struct PredictionErrors {

@@ -20,6 +20,8 @@ struct ReproduceOptions {
   bool full_maps = false;
   std::size_t threads = 0;
   bool progress = true;  ///< stage lines on a terminal only
+  /// Throws Error naming the field that is out of range (an empty out_dir).
+  void validate() const;
 };
 
 struct ReproduceResult {
