@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/model/scenario_toml.hpp"
+#include "simple_rig.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/stability/linearization.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
@@ -16,12 +16,7 @@ namespace pneumachaos {
 namespace {
 
 // The paper's analysis is about the simple rig (one rigid mass): the tests start from it.
-Scenario scenario(const std::vector<std::string>& sets) {
-  Scenario s = simple_rig_scenario();
-  apply_overrides(s, sets);
-  s.validate();
-  return s;
-}
+Scenario scenario(const std::vector<std::string>& sets) { return simple_rig_with(sets); }
 
 // A Stribeck drop 40 mm/s wide (exponent 1), as in docs/notes/virtual_rig.md: its negative slope
 // reaches the paper's operating speeds, so the map holds both verdicts.
