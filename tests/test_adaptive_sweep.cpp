@@ -72,6 +72,9 @@ TEST(AdaptiveSweep, EvaluatedRunsAreTheFullSweepsRecordsAndTheRestIsInferred) {
     EXPECT_EQ(adaptive_points[p + 1].back(), inferred ? '1' : '0');
     if (!inferred) EXPECT_EQ(adaptive_points[p + 1], full_points[p + 1]);
     if (inferred) EXPECT_EQ(adaptive.per_point[p].runs, 0u);
+    // The lattice the report counts motion on: the same in both, and never inferred.
+    EXPECT_EQ(adaptive.per_point[p].on_lattice, full.per_point[p].on_lattice) << p;
+    if (adaptive.per_point[p].on_lattice) EXPECT_FALSE(inferred) << p;
   }
   // On this small map the border is followed exactly.
   const MapAgreement m = compare_maps(small_map(true), full, adaptive);

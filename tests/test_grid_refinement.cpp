@@ -3,6 +3,7 @@
 // step between the lattice's points is missed).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pneumachaos/core/error.hpp"
@@ -100,6 +101,21 @@ TEST(GridRefinement, BatchesAreNewAscendingPointsAndTheFirstIsTheLattice) {
   }
   const auto source = g.sources();
   for (std::size_t p = 0; p < 35; ++p) EXPECT_EQ(classes[source[p]], p == 16 ? 1 : 0) << p;
+}
+
+// The lattice the report counts motion on (PointSummary::on_lattice) is exactly round 0, so
+// every adaptive map runs it, whatever the classes do afterwards.
+TEST(GridRefinement, TheCoarseLatticeIsRoundZero) {
+  GridRefinement g(5, 7, 2);
+  const auto first = g.next(std::vector<int>(35, 0));
+  const std::vector<char> mask = coarse_lattice(5, 7, 2);
+  std::vector<std::size_t> on;
+  for (std::size_t p = 0; p < mask.size(); ++p)
+    if (mask[p] != 0) on.push_back(p);
+  EXPECT_EQ(on, first);
+  const std::vector<char> paper = coarse_lattice(kN0, kN1, kStep);
+  EXPECT_EQ(std::count(paper.begin(), paper.end(), 1), 8 * 9);
+  EXPECT_THROW(coarse_lattice(3, 3, 0), Error);
 }
 
 TEST(GridRefinement, AnAxisOfOneValueIsALine) {

@@ -132,6 +132,22 @@ TEST(MapRules, SignRuleCountsUndecidedPointsApart) {
   EXPECT_EQ(oscillating_points(s), 1u);
 }
 
+// An adaptive map infers a point's motion from a cell uniform in other classes: the motion
+// counts read the coarse lattice only, which every map runs.
+TEST(MapRules, MotionIsCountedOnTheLatticeOnly) {
+  SweepSummary s;
+  s.per_point = {point_with(0.0, 0.0), point_with(0.0, 0.0), point_with(1.0, 0.0)};
+  s.per_point[1].on_lattice = false;
+  EXPECT_EQ(oscillating_points(s), 1u);
+  EXPECT_EQ(lattice_points(s), 2u);
+  const SignRuleCounts c = count_sign_rule({false, false, true}, s);
+  EXPECT_EQ(c.excited, 1u);  // point 1, off the lattice, is not counted
+  EXPECT_EQ(c.damped, 1u);
+  s.per_point[1].on_lattice = true;
+  EXPECT_EQ(oscillating_points(s), 2u);
+  EXPECT_EQ(count_sign_rule({false, false, true}, s).excited, 2u);
+}
+
 // Runs judged steady or undetermined cannot be false positives: the allowance counts the rest,
 // and a map whose chaos stays within it has no chaos to locate.
 TEST(MapRules, FalsePositivesCountOnlyJudgedRuns) {

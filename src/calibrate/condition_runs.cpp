@@ -31,7 +31,7 @@ SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCon
   spec.axes = o.maps.axes;
   spec.repeats = o.maps.repeats;
   spec.adaptive.enabled = o.maps.adaptive;
-  spec.adaptive.follow_motion = true;  // the damping claims read each point's motion
+  // The damping claims read a point's motion on the coarse lattice, which every map runs.
   return spec;
 }
 

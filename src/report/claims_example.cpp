@@ -197,14 +197,15 @@ Claim sign_rule(const ClaimInputs& in) {
           "Section 3.2 (and b1, Section 3.3)",
           "where the paper's coefficient is positive the motion settles; where negative it "
           "keeps oscillating",
-          "over the Fig. 4 map, at least 80 % of the decided points (half of their runs or more "
-          "with a determined regime) of each sign behave as it says; undecided points are "
-          "counted apart",
+          "over the Fig. 4 map's coarse lattice (every 4th grid line of each axis and the last: "
+          "the points every map runs, adaptive or full), at least 80 % of the decided points "
+          "(half of their runs or more with a determined regime) of each sign behave as it "
+          "says; undecided points are counted apart",
           "stability_map"};
   if (!in.sign_rule) return missing(c, "no map");
   const SignRuleCounts& s = *in.sign_rule;
-  c.ours = fmt::format("damped: {} of {} steady; self-excited: {} of {} oscillating; {} points "
-                       "undecided",
+  c.ours = fmt::format("damped: {} of {} steady; self-excited: {} of {} oscillating; {} "
+                       "lattice points undecided",
                        s.damped_steady, s.damped, s.excited_moving, s.excited, s.undecided);
   judge(c, sign_rule_holds(s));
   return c;

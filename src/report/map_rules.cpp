@@ -194,8 +194,13 @@ bool chaos_beyond_false_positives(const SweepSummary& s) {
 std::size_t oscillating_points(const SweepSummary& s) {
   return static_cast<std::size_t>(
       std::count_if(s.per_point.begin(), s.per_point.end(), [](const PointSummary& p) {
-        return point_motion(p) == Motion::kOscillating;
+        return p.on_lattice && point_motion(p) == Motion::kOscillating;
       }));
+}
+
+std::size_t lattice_points(const SweepSummary& s) {
+  return static_cast<std::size_t>(std::count_if(
+      s.per_point.begin(), s.per_point.end(), [](const PointSummary& p) { return p.on_lattice; }));
 }
 
 RuleResult sign_rule_holds(const SignRuleCounts& s) {
@@ -219,7 +224,7 @@ SignRuleCounts count_sign_rule(const std::vector<std::optional<bool>>& damped,
                                const SweepSummary& sweep) {
   SignRuleCounts c;
   for (std::size_t i = 0; i < damped.size() && i < sweep.per_point.size(); ++i) {
-    if (!damped[i]) continue;
+    if (!damped[i] || !sweep.per_point[i].on_lattice) continue;
     const Motion m = point_motion(sweep.per_point[i]);
     if (m == Motion::kUndecided) {
       ++c.undecided;

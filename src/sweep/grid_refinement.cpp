@@ -77,9 +77,7 @@ std::vector<std::size_t> GridRefinement::next(const std::vector<int>& classes) {
     for (const auto& [i0, i1] : intervals(lattice(n0_, step_)))
       for (const auto& [j0, j1] : intervals(lattice(n1_, step_)))
         cells_.push_back({i0, i1, j0, j1});
-    for (const Cell& c : cells_)
-      for (std::size_t i : {c.i0, c.i1})
-        for (std::size_t j : {c.j0, c.j1}) asked[i * n1_ + j] = 1;
+    asked = coarse_lattice(n0_, n1_, step_);
   } else {
     // A split whose new corners a neighbour has already evaluated asks for nothing; its
     // children are judged at once, until some point is asked for or no cell splits.
@@ -152,6 +150,15 @@ RefinementResult refine_grid(std::size_t n0, std::size_t n1, std::size_t coarse_
   for (std::size_t p = 0; p < g.points(); ++p) r.evaluated[p] = g.evaluated(p) ? 1 : 0;
   r.source = g.sources();
   return r;
+}
+
+std::vector<char> coarse_lattice(std::size_t n0, std::size_t n1, std::size_t coarse_step) {
+  if (n0 == 0 || n1 == 0) throw Error("grid refinement", "the grid has no points");
+  if (coarse_step == 0) throw Error("grid refinement", "the coarse step must be at least 1");
+  std::vector<char> on(n0 * n1, 0);
+  for (std::size_t i : lattice(n0, coarse_step))
+    for (std::size_t j : lattice(n1, coarse_step)) on[i * n1 + j] = 1;
+  return on;
 }
 
 }  // namespace pneumachaos

@@ -3,6 +3,7 @@
 
 #include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/sweep/grid_refinement.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -62,6 +63,13 @@ void count_regions(const SweepSpec& spec, SweepSummary& s) {
   }
 }
 
+// The points an adaptive map of this grid runs first (every point of a grid it cannot refine).
+std::vector<char> lattice_of(const SweepSpec& spec) {
+  if (spec.axes.size() != 2) return std::vector<char>(spec.points(), 1);
+  return coarse_lattice(spec.axes[0].values.size(), spec.axes[1].values.size(),
+                        std::max<std::size_t>(spec.adaptive.coarse_step, 1));
+}
+
 }  // namespace
 
 bool in_stick_slip_region(const PointSummary& p) {
@@ -90,9 +98,11 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
   std::vector<std::size_t> lambda_count(s.points, 0);
   std::vector<std::vector<const RunRecord*>> by_point(s.points);
   for (const RunRecord& r : records) by_point.at(r.point).push_back(&r);
+  const std::vector<char> lattice = lattice_of(spec);
   for (std::size_t p = 0; p < s.points; ++p) {
     PointSummary& ps = s.per_point[p];
     ps.point = p;
+    ps.on_lattice = lattice[p] != 0;
     const auto index = grid_index(spec.axes, p);
     for (std::size_t a = 0; a < spec.axes.size(); ++a)
       ps.coordinates.push_back(spec.axes[a].values[index[a]]);

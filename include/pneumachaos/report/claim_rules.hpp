@@ -180,8 +180,13 @@ bool chaos_beyond_false_positives(const SweepSummary& s);
 /// Chaotic runs of a map (incidence times successful runs, summed; a point an adaptive map
 /// inferred counts as many runs as an evaluated one).
 std::size_t chaotic_runs(const SweepSummary& s);
-/// Points whose determined runs mostly oscillate (not steady); undetermined runs left out.
+/// Points of the coarse lattice (PointSummary::on_lattice: run by full and adaptive maps
+/// alike, an even sample of the grid) whose determined runs mostly oscillate (not steady);
+/// undetermined runs left out. Off the lattice an adaptive map's motion is inferred from a
+/// cell uniform in other classes, so it is not counted.
 std::size_t oscillating_points(const SweepSummary& s);
+/// The points oscillating_points() reads.
+std::size_t lattice_points(const SweepSummary& s);
 
 /// The paper's sign rule (a1 / b1 < 0: self-excited) against the simulated runs per point.
 /// A point is decided when at least half of its runs got a determined regime; it is steady
@@ -191,8 +196,9 @@ struct SignRuleCounts {
   std::size_t excited = 0, excited_moving = 0;  ///< decided points it calls self-excited
   std::size_t undecided = 0;                    ///< points counted apart (mostly undetermined)
 };
-/// The counts over a map: damped[i] is the sign rule's call at point i (empty: no steady
-/// motion there, not counted), in the sweep's point order.
+/// The counts over a map's coarse lattice (as oscillating_points()): damped[i] is the sign
+/// rule's call at point i (empty: no steady motion there, not counted), in the sweep's point
+/// order.
 SignRuleCounts count_sign_rule(const std::vector<std::optional<bool>>& damped,
                                const SweepSummary& sweep);
 /// (i) and (ii): at least 80 % of the decided points of each class behave as the sign says.

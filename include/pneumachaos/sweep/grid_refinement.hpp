@@ -66,4 +66,10 @@ struct RefinementResult {
 RefinementResult refine_grid(std::size_t n0, std::size_t n1, std::size_t coarse_step,
                              const std::function<int(std::size_t)>& class_of);
 
+/// The refinement's round 0 as a mask over the n0 x n1 grid: 1 on every `coarse_step`-th line
+/// of each axis and on its last. Every adaptive map of the grid runs these points, and they
+/// sample the whole grid evenly (the refined points crowd at the borders): what a map does
+/// not follow can be read on them, the same with and without refinement.
+std::vector<char> coarse_lattice(std::size_t n0, std::size_t n1, std::size_t coarse_step);
+
 }  // namespace pneumachaos
