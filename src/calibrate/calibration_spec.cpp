@@ -235,7 +235,7 @@ MapSettings read_map_settings(Table& r) {
   m.duration_s = r.number_or("duration_s", m.duration_s);
   if (!(m.duration_s > 0.0) || m.duration_s > 3600.0)
     throw Error(r.where("duration_s"), "expected 0 < duration_s <= 3600");
-  m.adaptive = r.flag_or("adaptive", false);
+  m.adaptive = r.flag_or("adaptive", true);
   return m;
 }
 
