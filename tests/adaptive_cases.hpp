@@ -17,8 +17,8 @@ struct AdaptiveCase {
   double min_runs_ratio;  ///< the issue's goal: 4x fewer runs on the paper's maps
 };
 
-/// `variants_dir`: docs/variants. Each map as reproduce runs it: 5 runs per point, 3 % friction
-/// variation and a 2 % bore texture per run.
+/// `variants_dir`: docs/variants. Each map as reproduce runs it: the paper's Ps and total moving
+/// mass, 5 runs per point, 3 % friction variation and a 2 % bore texture per run.
 inline std::vector<AdaptiveCase> adaptive_cases(const std::string& variants_dir) {
   const auto spec = [](Scenario base, std::vector<GridAxis> axes) {
     SweepSpec s;
@@ -29,14 +29,17 @@ inline std::vector<AdaptiveCase> adaptive_cases(const std::string& variants_dir)
     s.repeats = 5;
     return s;
   };
-  const auto fig = [&](const std::vector<std::string>& sets) {
-    return spec(build_scenario("", sets), paper_valve_grid());
+  // The report's conditions (src/report/reproduce.cpp): Ps and the total moving mass m.
+  const auto fig = [&](const std::string& Ps_MPa, double m_kg) {
+    Scenario base = build_scenario("", {"supply.pressure_MPa=" + Ps_MPa});
+    base.set_total_moving_mass(m_kg);
+    return spec(std::move(base), paper_valve_grid());
   };
   return {
-      {"fig4 (Ps 0.25 MPa, m 1.5 kg)", fig({}), 4.0},
-      {"fig5 (Ps 0.30 MPa, m 1.5 kg)", fig({"supply.pressure_MPa=0.30"}), 4.0},
-      {"fig6 (Ps 0.25 MPa, m 3.0 kg)", fig({"load.mass_kg=3.0"}), 4.0},
-      {"fig6b (Ps 0.25 MPa, m 4.5 kg)", fig({"load.mass_kg=4.5"}), 4.0},
+      {"fig4 (Ps 0.25 MPa, m 1.5 kg)", fig("0.25", 1.5), 4.0},
+      {"fig5 (Ps 0.30 MPa, m 1.5 kg)", fig("0.30", 1.5), 4.0},
+      {"fig6 (Ps 0.25 MPa, m 3.0 kg)", fig("0.25", 3.0), 4.0},
+      {"fig6b (Ps 0.25 MPa, m 4.5 kg)", fig("0.25", 4.5), 4.0},
       {"simple rig, fig4 grid",
        spec(build_scenario(variants_dir + "/simple_rig.toml", {}), paper_valve_grid()), 1.0},
       {"default rig, S1 0.10-1.35 mm^2",
