@@ -48,11 +48,19 @@ BasicPressureGains<T> pressure_gain_of(const T* q) {
 
 template <typename T>
 FitParams<T> params_of(FrictionKind kind, const T* q) {
-  return {.kind = kind, .curve = curve_of(q), .pressure_gain = pressure_gain_of(q)};
+  FitParams<T> p;
+  p.kind = kind;
+  p.curve = curve_of(q);
+  p.pressure_gain = pressure_gain_of(q);
+  return p;
 }
 
 FrictionParams to_friction(FrictionKind kind, const double* q) {
-  return {.kind = kind, .curve = curve_of(q), .pressure_gain = pressure_gain_of(q)};
+  FrictionParams f;
+  f.kind = kind;
+  f.curve = curve_of(q);
+  f.pressure_gain = pressure_gain_of(q);
+  return f;
 }
 
 // The comparison set (docs/friction.md, "Fits"): the equation of motion integrated over
@@ -173,16 +181,17 @@ struct LuGreResidual {
   bool operator()(const T* const q, T* residual) const {
     using std::abs;
     using std::exp;
-    const FitParams<T> p{
-        .kind = FrictionKind::kLuGre,
-        .curve = {.coulomb_N = q[2],
-                  .static_N = q[3],
-                  .viscous_Ns_per_m = q[5],
-                  .stribeck_velocity_m_per_s = q[4] * 1e-3,
-                  .stribeck_exponent = T(levels.curve.stribeck_exponent)},
-        .pressure_gain = {.coulomb_N_per_Pa = T(levels.pressure_gain.coulomb_N_per_Pa),
-                          .static_N_per_Pa = T(levels.pressure_gain.static_N_per_Pa)},
-        .lugre = {.sigma0_N_per_m = exp(q[0]), .sigma1_Ns_per_m = exp(q[1])}};
+    FitParams<T> p;
+    p.kind = FrictionKind::kLuGre;
+    p.curve = {.coulomb_N = q[2],
+               .static_N = q[3],
+               .viscous_Ns_per_m = q[5],
+               .stribeck_velocity_m_per_s = q[4] * 1e-3,
+               .stribeck_exponent = T(levels.curve.stribeck_exponent)};
+    p.pressure_gain = {.coulomb_N_per_Pa = T(levels.pressure_gain.coulomb_N_per_Pa),
+                       .static_N_per_Pa = T(levels.pressure_gain.static_N_per_Pa)};
+    p.lugre.sigma0_N_per_m = exp(q[0]);
+    p.lugre.sigma1_Ns_per_m = exp(q[1]);
     const std::size_t n = e->F_N.size();
     const double dt = n > 1 ? e->t_s[1] - e->t_s[0] : 1e-3;
     std::vector<T> force(n, T(0.0));

@@ -152,17 +152,18 @@ Scenario default_scenario() {
   // rows it enters stay within the default tolerances' own error.
   // The LuGre bristles of the earlier default (Canudas de Wit et al. 1995), unused by GMS:
   // kept so that `--set friction.model=lugre` gives search 22's LuGre comparison.
-  s.friction = FrictionParams{.kind = FrictionKind::kGms,
-                              .curve = {.coulomb_N = 19.7,
-                                        .static_N = 47.0,
-                                        .viscous_Ns_per_m = 26.0,
-                                        .stribeck_velocity_m_per_s = 0.045,
-                                        .stribeck_exponent = 1.0},
-                              .lugre = {.sigma0_N_per_m = 1.0e5, .sigma1_Ns_per_m = 26.0},
-                              .gms = {.count = 4,
-                                      .stiffness_N_per_m = 1.0e6,
-                                      .attraction_length_m = 250e-6,
-                                      .quasi_static_rate_per_s = 32000.0}};
+  s.friction.kind = FrictionKind::kGms;
+  s.friction.curve = {.coulomb_N = 19.7,
+                      .static_N = 47.0,
+                      .viscous_Ns_per_m = 26.0,
+                      .stribeck_velocity_m_per_s = 0.045,
+                      .stribeck_exponent = 1.0};
+  s.friction.gms = {.count = 4,
+                    .stiffness_N_per_m = 1.0e6,
+                    .attraction_length_m = 250e-6,
+                    .quasi_static_rate_per_s = 32000.0};
+  s.friction.lugre.sigma0_N_per_m = 1.0e5;
+  s.friction.lugre.sigma1_Ns_per_m = 26.0;
   // The load rides its own linear guide and is coupled to the rod by a compliant mount, the
   // lightly damped second degree of freedom near the pneumatic frequency that chaos needs.
   s.load.coupling = LoadCoupling::kSpring;
@@ -176,15 +177,17 @@ Scenario default_scenario() {
   s.load.coupling_stiffness_N_per_m = 12.46e3;
   s.load.coupling_damping_Ns_per_m = 7.0;
   // Every guide field not named here at its default.
-  s.load.guide_friction =
-      FrictionParams{.kind = FrictionKind::kLuGre,
-                     .curve = {.coulomb_N = 12.5,
-                               .static_N = 13.5,
-                               .viscous_Ns_per_m = 16.0,
-                               .stribeck_velocity_m_per_s = 0.0037,
-                               .stribeck_exponent = 0.5},
-                     .pressure_gain = {.coulomb_N_per_Pa = 0.0, .static_N_per_Pa = 0.0},
-                     .lugre = {.sigma0_N_per_m = 1.9e5, .sigma1_Ns_per_m = 86.0}};
+  FrictionParams& guide = s.load.guide_friction;
+  guide = FrictionParams{};
+  guide.kind = FrictionKind::kLuGre;
+  guide.curve = {.coulomb_N = 12.5,
+                 .static_N = 13.5,
+                 .viscous_Ns_per_m = 16.0,
+                 .stribeck_velocity_m_per_s = 0.0037,
+                 .stribeck_exponent = 0.5};
+  guide.pressure_gain = {.coulomb_N_per_Pa = 0.0, .static_N_per_Pa = 0.0};
+  guide.lugre.sigma0_N_per_m = 1.9e5;
+  guide.lugre.sigma1_Ns_per_m = 86.0;
   // The chamber volumes follow the piston over the 500 mm stroke (a catalogue stroke of a
   // 40 mm bore, which comes up to ~1 m); a run ends at the stroke end, at the Fig. 7 point
   // after about 7.5 s, so the frozen position is off (the key stays for studies).
