@@ -44,8 +44,8 @@ struct BasicStribeckCurve {
 };
 using StribeckCurve = BasicStribeckCurve<double>;
 
-/// Pressure dependence (docs/model.md, "Friction"): Fc = Fc0 + coulomb * (P1 + P2 - 2 Pa),
-/// Fs likewise with `static`.
+/// Pressure dependence (docs/model.md, "Friction"): Fc = Fc0 + coulomb_N_per_Pa (P1 + P2 - 2 Pa)
+/// with Fc0 the curve's level, Fs likewise with static_N_per_Pa.
 template <typename T>
 struct BasicPressureGains {
   T coulomb_N_per_Pa = T(0.0);
