@@ -20,8 +20,8 @@ void run(benchmark::State& state, double S2_mm2) {
   Scenario start = truth;
   apply_setting(start, "circuit.S1_mm2", 1.25 * 2.70, "bench");
   apply_setting(start, "circuit.S2_mm2", 0.78 * S2_mm2, "bench");
-  apply_setting(start, "friction.Fc_N", 1.2 * truth.friction.coulomb_N, "bench");
-  apply_setting(start, "friction.Fs_N", 0.9 * truth.friction.static_N, "bench");
+  apply_setting(start, "friction.Fc_N", 1.2 * truth.friction.curve.coulomb_N, "bench");
+  apply_setting(start, "friction.Fs_N", 0.9 * truth.friction.curve.static_N, "bench");
   const auto keys = default_free_keys(start);
   double s1 = 0, s2 = 0;
   int iterations = 0;

@@ -58,7 +58,7 @@ void BM_FrictionAllFits(benchmark::State& state) {
   const auto settings = estimate_settings_from(s);
   FrictionFitOptions o;
   o.start = s.friction;
-  o.fixed_exponent = s.friction.stribeck_exponent;
+  o.fixed_exponent = s.friction.curve.stribeck_exponent;
   for (auto _ : state) {
     const auto e = estimate_friction(r, settings);
     benchmark::DoNotOptimize(fit_friction(e, o).preferred_model);

@@ -108,8 +108,8 @@ void BM_VirtualRigQuasiStatic(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = static_cast<double>(state.range(1)) * 1e-8;
   if (state.range(0) == 0) {
-    s.friction.quasi_static_rate_per_s = 0.0;
-    s.load.guide_friction.quasi_static_rate_per_s = 0.0;
+    s.friction.lugre.quasi_static_rate_per_s = 0.0;
+    s.load.guide_friction.lugre.quasi_static_rate_per_s = 0.0;
   }
   state.SetLabel(state.range(0) == 0 ? "full bristle equation" : "quasi-static limit (default)");
   run_rig(state, s);
@@ -123,7 +123,7 @@ void BM_VirtualRigQuasiStatic(benchmark::State& state) {
 void BM_VirtualRigGmsQuasiStatic(benchmark::State& state) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = static_cast<double>(state.range(2)) * 1e-8;
-  s.friction.gms_quasi_static_rate_per_s =
+  s.friction.gms.quasi_static_rate_per_s =
       state.range(0) == 0 ? 0.0 : static_cast<double>(state.range(1));
   state.SetLabel(state.range(0) == 0 ? "full law (default)" : "GMS limit (option)");
   run_rig(state, s);

@@ -28,7 +28,7 @@ Scenario closed_gas_spring(double h_W_per_m2K) {
   s.circuit.S1_m2 = 0.0;
   s.circuit.S2_m2 = 0.0;
   s.friction.kind = FrictionKind::kClassic;
-  s.friction.coulomb_N = s.friction.static_N = s.friction.viscous_Ns_per_m = 0.0;
+  s.friction.curve.coulomb_N = s.friction.curve.static_N = s.friction.curve.viscous_Ns_per_m = 0.0;
   return s;
 }
 
@@ -122,7 +122,8 @@ TEST(ChamberEnergy, AdiabaticFillingOfARigidChamberMatchesTheFirstLaw) {
   Scenario s = energy_rig(0.0);
   s.circuit.S2_m2 = 0.0;
   s.friction.kind = FrictionKind::kClassic;
-  s.friction.coulomb_N = s.friction.static_N = 1.0e5;  // the piston never leaves the stop
+  s.friction.curve.coulomb_N = s.friction.curve.static_N =
+      1.0e5;  // the piston never leaves the stop
   const Plant plant(s);
   const auto r = simulate(plant, tight(1.0));
   ASSERT_TRUE(r.summary.ok()) << r.summary.message;

@@ -40,8 +40,8 @@ Scenario off_start(const Scenario& truth, double f1, double f2, double fc, doubl
   Scenario s = truth;
   apply_setting(s, "circuit.S1_mm2", f1 * truth.circuit.S1() * 1e6, "test");
   apply_setting(s, "circuit.S2_mm2", f2 * truth.circuit.S2() * 1e6, "test");
-  apply_setting(s, "friction.Fc_N", fc * truth.friction.coulomb_N, "test");
-  apply_setting(s, "friction.Fs_N", fs * truth.friction.static_N, "test");
+  apply_setting(s, "friction.Fc_N", fc * truth.friction.curve.coulomb_N, "test");
+  apply_setting(s, "friction.Fs_N", fs * truth.friction.curve.static_N, "test");
   return s;
 }
 
@@ -103,8 +103,8 @@ TEST(Fit, RecoversS1S2FromStickSlipRecord) {
       std::printf("S2 = %.2f mm^2, seed %d: S1 %s, S2 %s, Fc %s, Fs %s; %.1f s\n", S2,
                   static_cast<int>(seed), err("circuit.S1_mm2", 2.70).c_str(),
                   err("circuit.S2_mm2", S2).c_str(),
-                  err("friction.Fc_N", truth.friction.coulomb_N).c_str(),
-                  err("friction.Fs_N", truth.friction.static_N).c_str(), r.wall_time_s);
+                  err("friction.Fc_N", truth.friction.curve.coulomb_N).c_str(),
+                  err("friction.Fs_N", truth.friction.curve.static_N).c_str(), r.wall_time_s);
       expect_recovered(r, truth, 0.05);
     }
   }

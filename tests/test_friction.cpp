@@ -12,13 +12,13 @@ namespace {
 FrictionParams params(FrictionKind kind) {
   FrictionParams p;
   p.kind = kind;
-  p.coulomb_N = 20.0;
-  p.static_N = 40.0;
-  p.viscous_Ns_per_m = 30.0;
-  p.stribeck_velocity_m_per_s = 0.01;
-  p.stribeck_exponent = 2.0;
-  p.sigma0_N_per_m = 1e5;
-  p.sigma1_Ns_per_m = 300.0;
+  p.curve.coulomb_N = 20.0;
+  p.curve.static_N = 40.0;
+  p.curve.viscous_Ns_per_m = 30.0;
+  p.curve.stribeck_velocity_m_per_s = 0.01;
+  p.curve.stribeck_exponent = 2.0;
+  p.lugre.sigma0_N_per_m = 1e5;
+  p.lugre.sigma1_Ns_per_m = 300.0;
   return p;
 }
 
@@ -41,8 +41,8 @@ TEST(Friction, StribeckHasNegativeSlopeAtLowSpeed) {
 
 TEST(Friction, PressureDependenceRaisesBothLevels) {
   FrictionParams p = params(FrictionKind::kClassic);
-  p.coulomb_gain_N_per_Pa = 10e-6;  // 10 N/MPa
-  p.static_gain_N_per_Pa = 20e-6;
+  p.pressure_gain.coulomb_N_per_Pa = 10e-6;  // 10 N/MPa
+  p.pressure_gain.static_N_per_Pa = 20e-6;
   const auto f = make_friction_model(p);
   EXPECT_NEAR(f->holding_force_N({0.0, 0.5e6, 0.0}, {}), 50.0, 1e-12);
   EXPECT_NEAR(f->force_N({0.0, 0.5e6, 0.0}, +1, {}, {}), 25.0, 1e-12);
@@ -53,9 +53,9 @@ TEST(Friction, TextureScalesBothLevelsByOneFactor) {
   // for both (docs/notes/performance.md): the steady force must equal the law written out here
   // operation for operation, to the last bit.
   FrictionParams p = params(FrictionKind::kStribeck);
-  p.stribeck_exponent = 1.0;
-  p.coulomb_gain_N_per_Pa = 10e-6;
-  p.static_gain_N_per_Pa = 20e-6;
+  p.curve.stribeck_exponent = 1.0;
+  p.pressure_gain.coulomb_N_per_Pa = 10e-6;
+  p.pressure_gain.static_N_per_Pa = 20e-6;
   p.texture = {{0.02, 300.0, 0.4}, {-0.01, 150.0, 2.0}, {0.015, 610.0, 5.1}, {0.005, 90.0, 1.0}};
   const double gauge = 0.3e6;
   for (FrictionKind kind : {FrictionKind::kStribeck, FrictionKind::kLuGre}) {

@@ -59,11 +59,11 @@ MeasuredRecord degraded_record(const Scenario& s, double duration_s, const Degra
 Scenario rig(FrictionKind kind, double S2_mm2) {
   Scenario s = simple_rig_scenario();
   s.friction.kind = kind;
-  s.friction.coulomb_N = 20.0;
-  s.friction.static_N = 40.0;
-  s.friction.viscous_Ns_per_m = 30.0;
-  s.friction.stribeck_velocity_m_per_s = 0.01;
-  s.friction.stribeck_exponent = 2.0;
+  s.friction.curve.coulomb_N = 20.0;
+  s.friction.curve.static_N = 40.0;
+  s.friction.curve.viscous_Ns_per_m = 30.0;
+  s.friction.curve.stribeck_velocity_m_per_s = 0.01;
+  s.friction.curve.stribeck_exponent = 2.0;
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
   s.cylinder.frozen_position_m = 0.42;  // as docs/variants/simple_rig.toml
   return s;
@@ -77,7 +77,7 @@ struct Recovered {
 Recovered recover(const Scenario& s, const MeasuredRecord& r, std::vector<FrictionFitModel> models) {
   FrictionFitOptions o;
   o.models = std::move(models);
-  o.fixed_exponent = s.friction.stribeck_exponent;
+  o.fixed_exponent = s.friction.curve.stribeck_exponent;
   o.start = s.friction;
   Recovered out{estimate_friction(r, estimate_settings_from(s)), {}};
   out.fits = fit_friction(out.estimate, o);
@@ -192,12 +192,14 @@ void expect_recovered(const Case& c, unsigned seed) {
   ASSERT_TRUE(f.fitted) << f.skipped;
   ASSERT_TRUE(f.converged) << f.summary;
   SCOPED_TRACE(std::string(c.name) + ", seed " + std::to_string(seed));
-  EXPECT_LT(rel(f.param("Fs_N")->value, s.friction.static_N), 0.05) << f.param("Fs_N")->value;
-  EXPECT_LT(rel(f.param("Fc_N")->value, s.friction.coulomb_N), 0.05) << f.param("Fc_N")->value;
-  EXPECT_LT(rel(f.param("B_Ns_per_m")->value, s.friction.viscous_Ns_per_m), 0.10)
+  EXPECT_LT(rel(f.param("Fs_N")->value, s.friction.curve.static_N), 0.05) << f.param("Fs_N")->value;
+  EXPECT_LT(rel(f.param("Fc_N")->value, s.friction.curve.coulomb_N), 0.05)
+      << f.param("Fc_N")->value;
+  EXPECT_LT(rel(f.param("B_Ns_per_m")->value, s.friction.curve.viscous_Ns_per_m), 0.10)
       << f.param("B_Ns_per_m")->value;
   if (!classic)
-    EXPECT_LT(rel(f.param("vs_mm_per_s")->value * 1e-3, s.friction.stribeck_velocity_m_per_s), 0.30)
+    EXPECT_LT(rel(f.param("vs_mm_per_s")->value * 1e-3, s.friction.curve.stribeck_velocity_m_per_s),
+              0.30)
         << f.param("vs_mm_per_s")->value;
   // Every estimate carries a standard error.
   for (const auto& p : f.params)
@@ -277,8 +279,8 @@ TEST(FrictionValidation, TooFewSlidingSamplesIsSaidPerModel) {
 TEST(FrictionValidation, PressureDependentFit) {
   // Fc and Fs growing by 20 N/MPa of P1 + P2 - 2 Pa: recovered with the option.
   Scenario s = rig(FrictionKind::kClassic, 0.2);
-  s.friction.coulomb_gain_N_per_Pa = 20e-6;
-  s.friction.static_gain_N_per_Pa = 20e-6;
+  s.friction.pressure_gain.coulomb_N_per_Pa = 20e-6;
+  s.friction.pressure_gain.static_N_per_Pa = 20e-6;
   FrictionFitOptions o;
   o.models = {FrictionFitModel::kClassic};
   o.pressure_dependent = true;
@@ -315,11 +317,13 @@ TEST(FrictionValidation, LuGreSealRecord) {
   std::printf("lugre:");
   for (const auto& p : lugre->params) std::printf(" %s=%.4g+-%.2g", p.name.c_str(), p.value, p.stderr_value);
   std::printf(" rms %.3g\n", lugre->rms_N);
-  EXPECT_LT(rel(lugre->param("Fc_N")->value, s.friction.coulomb_N), 0.05);
-  EXPECT_LT(rel(lugre->param("Fs_N")->value, s.friction.static_N), 0.05);
-  EXPECT_LT(rel(lugre->param("B_Ns_per_m")->value, s.friction.viscous_Ns_per_m), 0.10);
-  EXPECT_LT(rel(lugre->param("vs_mm_per_s")->value * 1e-3, s.friction.stribeck_velocity_m_per_s), 0.30);
-  EXPECT_LT(rel(lugre->param("sigma0_N_per_m")->value, s.friction.sigma0_N_per_m), 0.30);
+  EXPECT_LT(rel(lugre->param("Fc_N")->value, s.friction.curve.coulomb_N), 0.05);
+  EXPECT_LT(rel(lugre->param("Fs_N")->value, s.friction.curve.static_N), 0.05);
+  EXPECT_LT(rel(lugre->param("B_Ns_per_m")->value, s.friction.curve.viscous_Ns_per_m), 0.10);
+  EXPECT_LT(
+      rel(lugre->param("vs_mm_per_s")->value * 1e-3, s.friction.curve.stribeck_velocity_m_per_s),
+      0.30);
+  EXPECT_LT(rel(lugre->param("sigma0_N_per_m")->value, s.friction.lugre.sigma0_N_per_m), 0.30);
 }
 
 TEST(FrictionEstimate, OfASimulatedRunForTheReport) {

@@ -21,14 +21,14 @@ namespace {
 FrictionParams gms_params(int elements) {
   FrictionParams p;
   p.kind = FrictionKind::kGms;
-  p.coulomb_N = 20.0;
-  p.static_N = 40.0;
-  p.viscous_Ns_per_m = 0.0;  // the loops below are the elements' own hysteresis
-  p.stribeck_velocity_m_per_s = 0.01;
-  p.stribeck_exponent = 2.0;
-  p.gms_elements = elements;
-  p.gms_stiffness_N_per_m = 1.0e5;
-  p.gms_attraction_length_m = 50e-6;
+  p.curve.coulomb_N = 20.0;
+  p.curve.static_N = 40.0;
+  p.curve.viscous_Ns_per_m = 0.0;  // the loops below are the elements' own hysteresis
+  p.curve.stribeck_velocity_m_per_s = 0.01;
+  p.curve.stribeck_exponent = 2.0;
+  p.gms.count = elements;
+  p.gms.stiffness_N_per_m = 1.0e5;
+  p.gms.attraction_length_m = 50e-6;
   return p;
 }
 
@@ -156,10 +156,11 @@ TEST(FrictionGms, HysteresisLoopAreaIsPositiveAndGrowsWithAmplitude) {
 // (dr/dt) / (a r) (here 1e-3 of it; the limit neglects that term).
 TEST(FrictionGms, ElementTrackingARisingShareSitsOnTheLoadingBranchsSlowManifold) {
   FrictionParams p = gms_params(1);
-  p.static_N = p.coulomb_N;           // no Stribeck drop: the level moves with the pressure alone
-  p.coulomb_gain_N_per_Pa = 1e-4;     // 100 N/MPa
-  p.static_gain_N_per_Pa = 1e-4;
-  p.gms_stiffness_N_per_m = 1e6;
+  p.curve.static_N =
+      p.curve.coulomb_N;  // no Stribeck drop: the level moves with the pressure alone
+  p.pressure_gain.coulomb_N_per_Pa = 1e-4;  // 100 N/MPa
+  p.pressure_gain.static_N_per_Pa = 1e-4;
+  p.gms.stiffness_N_per_m = 1e6;
   const auto f = make_friction_model(p);
   const double s = 0.05;              // m/s; the element's loading rate 4 s / r = 1e4 1/s
   const double gauge_rate = 2e6;      // Pa/s: the level rises at 200 N/s
@@ -194,7 +195,7 @@ TEST(FrictionGms, KeysRejectBadValuesNamingTheKey) {
   Scenario s;
   apply_setting(s, "friction.model", std::string("gms"), "");
   apply_setting(s, "friction.gms_elements", 6.0, "");
-  EXPECT_EQ(s.friction.gms_elements, 6);
+  EXPECT_EQ(s.friction.gms.count, 6);
   for (const auto& [key, value] :
        {std::pair<const char*, double>{"friction.gms_elements", 0.0},
         {"friction.gms_elements", 11.0},
@@ -243,16 +244,16 @@ TEST(FrictionGms, ValidateRejectsBadParametersNamingTheKey) {
   s.friction.kind = FrictionKind::kGms;
   EXPECT_EQ(key_of(s), "(accepted)");
   Scenario none = s;
-  none.friction.gms_elements = 0;
+  none.friction.gms.count = 0;
   EXPECT_EQ(key_of(none), "friction.gms_elements");
   Scenario soft = s;
-  soft.friction.gms_stiffness_N_per_m = -1.0;
+  soft.friction.gms.stiffness_N_per_m = -1.0;
   EXPECT_EQ(key_of(soft), "friction.gms_stiffness_N_per_m");
   Scenario instant = s;
-  instant.friction.gms_attraction_length_m = 0.0;
+  instant.friction.gms.attraction_length_m = 0.0;
   EXPECT_EQ(key_of(instant), "friction.gms_attraction_length_um");
   Scenario frictionless = s;
-  frictionless.friction.coulomb_N = 0.0;
+  frictionless.friction.curve.coulomb_N = 0.0;
   EXPECT_EQ(key_of(frictionless), "friction.Fc_N");
 }
 

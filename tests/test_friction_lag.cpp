@@ -21,12 +21,12 @@ FrictionParams lag_params(double tau_s) {
   FrictionParams p;
   p.kind = FrictionKind::kStribeck;
   p.memory = FrictionMemory::kLag;
-  p.coulomb_N = 20.0;
-  p.static_N = 40.0;
-  p.viscous_Ns_per_m = 30.0;
-  p.stribeck_velocity_m_per_s = 0.01;
-  p.stribeck_exponent = 2.0;
-  p.lag_time_s = tau_s;
+  p.curve.coulomb_N = 20.0;
+  p.curve.static_N = 40.0;
+  p.curve.viscous_Ns_per_m = 30.0;
+  p.curve.stribeck_velocity_m_per_s = 0.01;
+  p.curve.stribeck_exponent = 2.0;
+  p.lag.time_s = tau_s;
   return p;
 }
 
@@ -143,7 +143,7 @@ TEST(FrictionLag, OnlyTheStribeckModelTakesTheLag) {
 TEST(FrictionLag, StictionHoldsAndTheLagRecoversWhileStuck) {
   Scenario s = simple_rig_scenario();
   s.friction.memory = FrictionMemory::kLag;  // the simple rig's seal is stribeck
-  s.friction.lag_time_s = 0.01;
+  s.friction.lag.time_s = 0.01;
   s.circuit.S2_m2 = 0.05e-6;  // small exhaust: stick-slip on the simple rig
   const Plant plant(s);
   EXPECT_EQ(plant.initial_state()[plant.layout().seal_z], 1.0);  // rested before the start

@@ -20,14 +20,14 @@ Scenario at(double S2_mm2, double limit_per_s) {
   Scenario s = default_scenario();
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
   s.run.duration_s = 2.0;  // both points reach the stroke end before (0.84 and 1.1 s)
-  s.friction.gms_quasi_static_rate_per_s = limit_per_s;
+  s.friction.gms.quasi_static_rate_per_s = limit_per_s;
   return s;
 }
 
 // The default threshold is above every loading rate of the chaotic point (S2 0.35 mm^2) and
 // of stick-slip (0.05, 0.20): those runs are the full law's, bit for bit.
 TEST(GmsQuasiStatic, DefaultThresholdLeavesTheChaoticAndStickSlipPointsUntouched) {
-  const double threshold = default_scenario().friction.gms_quasi_static_rate_per_s;
+  const double threshold = default_scenario().friction.gms.quasi_static_rate_per_s;
   EXPECT_GT(threshold, 0.0);
   for (const double S2_mm2 : {0.05, 0.20, 0.35}) {
     const Scenario full = at(S2_mm2, 0.0);
@@ -43,7 +43,7 @@ TEST(GmsQuasiStatic, DefaultThresholdLeavesTheChaoticAndStickSlipPointsUntouched
 // tight reference within twice what the full law at the default tolerances makes (1.0e-6 and
 // 3.3e-7 m/s here, 1e-6 of the speed), and fewer than half of its derivative evaluations.
 TEST(GmsQuasiStatic, MatchesTheFullLawWhileSlidingFast) {
-  const double threshold = default_scenario().friction.gms_quasi_static_rate_per_s;
+  const double threshold = default_scenario().friction.gms.quasi_static_rate_per_s;
   for (const double S2_mm2 : {3.0, 4.4}) {  // 0.6-0.8 m/s
     const Scenario full = at(S2_mm2, 0.0);
     const auto reference = simulate(Plant(full), tight(2.0));

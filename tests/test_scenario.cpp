@@ -25,8 +25,8 @@ TEST(Scenario, KeysConvertEngineeringUnitsOnce) {
   EXPECT_DOUBLE_EQ(s.circuit.S1(), 3.1e-6);
   EXPECT_DOUBLE_EQ(s.supply_pressure_Pa(), 101325.0 + 0.3e6);
   EXPECT_DOUBLE_EQ(s.cylinder.bore_m, 0.032);
-  EXPECT_DOUBLE_EQ(s.friction.stribeck_velocity_m_per_s, 0.004);
-  EXPECT_DOUBLE_EQ(s.friction.coulomb_gain_N_per_Pa, 10e-6);
+  EXPECT_DOUBLE_EQ(s.friction.curve.stribeck_velocity_m_per_s, 0.004);
+  EXPECT_DOUBLE_EQ(s.friction.pressure_gain.coulomb_N_per_Pa, 10e-6);
   EXPECT_DOUBLE_EQ(s.run.max_step_s, 0.5e-3);
   EXPECT_EQ(s.friction.kind, FrictionKind::kLuGre);
 }

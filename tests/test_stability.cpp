@@ -35,7 +35,8 @@ TEST(Equilibrium, ChokedMeterOutSpeedAndForceBalance) {
   ASSERT_LT(s.ambient_pressure_Pa / e.P20_Pa, s.valve.critical_ratio);
   EXPECT_NEAR(e.v0_m_per_s / v_choked, 1.0, 1e-9);
   const double Pa = s.ambient_pressure_Pa;
-  const double friction = s.friction.coulomb_N + s.friction.viscous_Ns_per_m * e.v0_m_per_s;
+  const double friction =
+      s.friction.curve.coulomb_N + s.friction.curve.viscous_Ns_per_m * e.v0_m_per_s;
   EXPECT_NEAR(plant.A1() * (e.P10_Pa - Pa) - plant.A2() * (e.P20_Pa - Pa), friction, 1e-6);
   EXPECT_NEAR(e.friction_N, friction, 1e-9);
   EXPECT_DOUBLE_EQ(e.position_m, 0.5 * s.cylinder.stroke_m);
@@ -182,7 +183,7 @@ TEST(Stability, MeterInUsesB1) {
   EXPECT_GT(r.paper.b1, 0.0);
   // b m equals k m R T Cd1 Ps / (V10 P10) when the supply is choked (eq. 11 from eq. 10).
   const double m = s.load.mass_kg;
-  EXPECT_NEAR(r.paper.b1 - s.friction.viscous_Ns_per_m, r.paper.b * m, 1e-6 * r.paper.b * m);
+  EXPECT_NEAR(r.paper.b1 - s.friction.curve.viscous_Ns_per_m, r.paper.b * m, 1e-6 * r.paper.b * m);
   EXPECT_EQ(r.verdict_full, StabilityVerdict::kDamped);
 }
 

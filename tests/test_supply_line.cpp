@@ -19,7 +19,7 @@ namespace {
 // The simple rig with its piston held at the stop by a seal no pressure here can break.
 Scenario blocked_piston_with_line(double volume_m3, double regulator_S_m2, double n) {
   Scenario s = simple_rig_scenario();
-  s.friction.coulomb_N = s.friction.static_N = 1.0e5;
+  s.friction.curve.coulomb_N = s.friction.curve.static_N = 1.0e5;
   s.supply_line.volume_m3 = volume_m3;
   s.supply_line.regulator_S_m2 = regulator_S_m2;
   s.supply_line.polytropic_exponent = n;

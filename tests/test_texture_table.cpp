@@ -55,5 +55,32 @@ TEST(TextureTable, OutsideTheStrokeTheSinesAreEvaluated) {
   }
 }
 
+// The table is the Plant's evaluation cache, held by its friction models beside the
+// parameters (TabulatedFriction), never part of the FrictionParams a user fills; it is built
+// for a textured contact only, and inside the stroke it is what the model reads (a level
+// that differs from the sines, within the bound above).
+template <typename P>
+concept HoldsTextureTable = requires(P p) {
+  p.texture_table;
+};
+static_assert(!HoldsTextureTable<FrictionParams>, "the texture table is no friction parameter");
+static_assert(HoldsTextureTable<TabulatedFriction>);
+
+TEST(TextureTable, ThePlantsModelsHoldTheTableForTexturedContactsOnly) {
+  const Scenario plain = build_scenario("", {});
+  EXPECT_EQ(Plant(plain).seal_friction().params().texture_table, nullptr);
+  const Scenario s = vary(build_scenario("", {"variation.texture_rel=0.05"}), run_seed(3, 1, 0));
+  const Plant plant(s);
+  ASSERT_NE(plant.seal_friction().params().texture_table, nullptr);
+  EXPECT_EQ(make_friction_model(s.friction)->params().texture_table, nullptr);
+  const auto sines = make_friction_model(s.friction);
+  int differing = 0;
+  for (int i = 0; i < 100; ++i) {
+    const double x = s.cylinder.stroke_m * (i + 0.5) / 100.0;
+    differing += level_at(plant.seal_friction(), x) != level_at(*sines, x);
+  }
+  EXPECT_GT(differing, 50);  // the table's rounding differs from the sines' at most points
+}
+
 }  // namespace
 }  // namespace pneumachaos

@@ -17,7 +17,7 @@ namespace {
 // Piston held at the stop, isothermal chamber 1: it fills at constant volume V1.
 Scenario blocked_isothermal(double tau_s) {
   Scenario s = simple_rig_scenario();
-  s.friction.coulomb_N = s.friction.static_N = 1.0e5;
+  s.friction.curve.coulomb_N = s.friction.curve.static_N = 1.0e5;
   s.polytropic_exponent = 1.0;
   s.supply_gauge_Pa = 0.6e6;
   if (tau_s > 0.0) {

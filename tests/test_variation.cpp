@@ -22,9 +22,9 @@ TEST(Variation, NonzeroVariationDiffersPerRunAndIsReproducible) {
       build_scenario("", {"variation.friction_rel_sd=0.1", "variation.texture_rel=0.05"});
   const Scenario a = vary(base, run_seed(1, 7, 0));
   const Scenario b = vary(base, run_seed(1, 7, 1));
-  EXPECT_NE(a.friction.coulomb_N, b.friction.coulomb_N);
-  EXPECT_EQ(a.friction.coulomb_N, vary(base, run_seed(1, 7, 0)).friction.coulomb_N);
-  EXPECT_GE(a.friction.static_N, a.friction.coulomb_N);
+  EXPECT_NE(a.friction.curve.coulomb_N, b.friction.curve.coulomb_N);
+  EXPECT_EQ(a.friction.curve.coulomb_N, vary(base, run_seed(1, 7, 0)).friction.curve.coulomb_N);
+  EXPECT_GE(a.friction.curve.static_N, a.friction.curve.coulomb_N);
   ASSERT_EQ(a.friction.texture.size(), 4u);
   // The texture makes the friction level depend on the position along the bore.
   const auto model = make_friction_model(a.friction);

@@ -17,16 +17,15 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The members friction_laws.hpp reads, in the fitted scalar T (double or ceres::Jet), so
-/// that the fitted laws are the plant's laws, written once.
+/// that the fitted laws are the plant's laws, written once: FrictionParams' own parameter
+/// structs on T, and no texture (the fits take the bore as uniform).
 template <typename T>
 struct FitParams {
   FrictionKind kind = FrictionKind::kStribeck;
-  T coulomb_N, static_N, viscous_Ns_per_m, stribeck_velocity_m_per_s, stribeck_exponent;
-  T sigma0_N_per_m, sigma1_Ns_per_m, coulomb_gain_N_per_Pa, static_gain_N_per_Pa;
+  BasicStribeckCurve<T> curve;
+  BasicPressureGains<T> pressure_gain;
+  BasicLuGreBristles<T> lugre;
   std::array<TextureMode, 0> texture{};
-  FrictionMemory memory = FrictionMemory::kNone;
-  double lag_time_s = 0.005;
-  [[nodiscard]] bool lagged() const { return false; }
 };
 
 // The static models' parameter block: q = Fc [N], Fs [N], vs [mm/s], delta, B [N s/m],
@@ -34,31 +33,33 @@ struct FitParams {
 enum Q { kFc, kFs, kVs, kDelta, kB, kGc, kGs, kQ };
 
 template <typename T>
+BasicStribeckCurve<T> curve_of(const T* q) {
+  return {.coulomb_N = q[kFc],
+          .static_N = q[kFs],
+          .viscous_Ns_per_m = q[kB],
+          .stribeck_velocity_m_per_s = q[kVs] * 1e-3,
+          .stribeck_exponent = q[kDelta]};
+}
+
+template <typename T>
+BasicPressureGains<T> pressure_gain_of(const T* q) {
+  return {.coulomb_N_per_Pa = q[kGc] * 1e-6, .static_N_per_Pa = q[kGs] * 1e-6};
+}
+
+template <typename T>
 FitParams<T> params_of(FrictionKind kind, const T* q) {
   FitParams<T> p;
   p.kind = kind;
-  p.coulomb_N = q[kFc];
-  p.static_N = q[kFs];
-  p.stribeck_velocity_m_per_s = q[kVs] * 1e-3;
-  p.stribeck_exponent = q[kDelta];
-  p.viscous_Ns_per_m = q[kB];
-  p.coulomb_gain_N_per_Pa = q[kGc] * 1e-6;
-  p.static_gain_N_per_Pa = q[kGs] * 1e-6;
-  p.sigma0_N_per_m = T(0.0);
-  p.sigma1_Ns_per_m = T(0.0);
+  p.curve = curve_of(q);
+  p.pressure_gain = pressure_gain_of(q);
   return p;
 }
 
 FrictionParams to_friction(FrictionKind kind, const double* q) {
   FrictionParams f;
   f.kind = kind;
-  f.coulomb_N = q[kFc];
-  f.static_N = q[kFs];
-  f.stribeck_velocity_m_per_s = q[kVs] * 1e-3;
-  f.stribeck_exponent = q[kDelta];
-  f.viscous_Ns_per_m = q[kB];
-  f.coulomb_gain_N_per_Pa = q[kGc] * 1e-6;
-  f.static_gain_N_per_Pa = q[kGs] * 1e-6;
+  f.curve = curve_of(q);
+  f.pressure_gain = pressure_gain_of(q);
   return f;
 }
 
@@ -182,15 +183,15 @@ struct LuGreResidual {
     using std::exp;
     FitParams<T> p;
     p.kind = FrictionKind::kLuGre;
-    p.coulomb_N = q[2];
-    p.static_N = q[3];
-    p.stribeck_velocity_m_per_s = q[4] * 1e-3;
-    p.stribeck_exponent = T(levels.stribeck_exponent);
-    p.viscous_Ns_per_m = q[5];
-    p.coulomb_gain_N_per_Pa = T(levels.coulomb_gain_N_per_Pa);
-    p.static_gain_N_per_Pa = T(levels.static_gain_N_per_Pa);
-    p.sigma0_N_per_m = exp(q[0]);
-    p.sigma1_Ns_per_m = exp(q[1]);
+    p.curve = {.coulomb_N = q[2],
+               .static_N = q[3],
+               .viscous_Ns_per_m = q[5],
+               .stribeck_velocity_m_per_s = q[4] * 1e-3,
+               .stribeck_exponent = T(levels.curve.stribeck_exponent)};
+    p.pressure_gain = {.coulomb_N_per_Pa = T(levels.pressure_gain.coulomb_N_per_Pa),
+                       .static_N_per_Pa = T(levels.pressure_gain.static_N_per_Pa)};
+    p.lugre.sigma0_N_per_m = exp(q[0]);
+    p.lugre.sigma1_Ns_per_m = exp(q[1]);
     const std::size_t n = e->F_N.size();
     const double dt = n > 1 ? e->t_s[1] - e->t_s[0] : 1e-3;
     std::vector<T> force(n, T(0.0));
@@ -201,11 +202,11 @@ struct LuGreResidual {
       in.gauge_sum_Pa = T(e->gauge_sum_Pa[i]);
       in.position_m = T(0.0);
       if (e->stuck[i]) {
-        const T zmax = friction_law::static_N(p, in) / p.sigma0_N_per_m;
-        z = T(e->F_N[i]) / p.sigma0_N_per_m;
+        const T zmax = friction_law::static_N(p, in) / p.lugre.sigma0_N_per_m;
+        z = T(e->F_N[i]) / p.lugre.sigma0_N_per_m;
         if (z > zmax) z = zmax;
         if (z < -zmax) z = -zmax;
-        force[i] = p.sigma0_N_per_m * z;
+        force[i] = p.lugre.sigma0_N_per_m * z;
         continue;
       }
       T dz;
@@ -219,8 +220,8 @@ struct LuGreResidual {
         BasicFrictionInput<T> mid = in;
         mid.v_m_per_s = T(v);
         const T g = friction_law::stribeck_level_N(p, mid, mid.v_m_per_s);
-        const T zss = (v >= 0.0 ? g : -g) / p.sigma0_N_per_m;
-        z = zss + (z - zss) * exp(-p.sigma0_N_per_m * std::abs(v) * (dt / kSub) / g);
+        const T zss = (v >= 0.0 ? g : -g) / p.lugre.sigma0_N_per_m;
+        z = zss + (z - zss) * exp(-p.lugre.sigma0_N_per_m * std::abs(v) * (dt / kSub) / g);
       }
     }
     std::size_t r = 0;
@@ -484,19 +485,19 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
   }
   // Start from the Stribeck fit's levels (or the scenario's), all refitted with sigma0, sigma1.
   FrictionParams levels = stribeck ? stribeck->friction : o.start;
-  if (!stribeck) levels.stribeck_exponent = o.fixed_exponent;
+  if (!stribeck) levels.curve.stribeck_exponent = o.fixed_exponent;
   levels.kind = FrictionKind::kLuGre;
   levels.texture.clear();
   levels.memory = FrictionMemory::kNone;
   std::vector<std::size_t> index;
   for (const Block& b : data.blocks)
     for (std::size_t k = 0; k < b.count; ++k) index.push_back(b.begin + k);
-  std::array<double, 6> q{std::log(std::clamp(o.start.sigma0_N_per_m, 1e3, 1e8)),
-                          std::log(std::clamp(o.start.sigma1_Ns_per_m, 1e-2, 1e5)),
-                          std::max(1e-3, levels.coulomb_N),
-                          std::max({1e-3, levels.static_N, levels.coulomb_N}),
-                          std::max(0.02, levels.stribeck_velocity_m_per_s * 1e3),
-                          levels.viscous_Ns_per_m};
+  std::array<double, 6> q{std::log(std::clamp(o.start.lugre.sigma0_N_per_m, 1e3, 1e8)),
+                          std::log(std::clamp(o.start.lugre.sigma1_Ns_per_m, 1e-2, 1e5)),
+                          std::max(1e-3, levels.curve.coulomb_N),
+                          std::max({1e-3, levels.curve.static_N, levels.curve.coulomb_N}),
+                          std::max(0.02, levels.curve.stribeck_velocity_m_per_s * 1e3),
+                          levels.curve.viscous_Ns_per_m};
   ceres::Problem problem;
   auto* functor = new LuGreResidual{&e, &data, index, levels};
   const LuGreResidual copy = *functor;
@@ -522,24 +523,28 @@ ModelFit fit_lugre(const FrictionEstimate& e, const FitData& data, std::size_t s
   score(f, res);
   const double dof = std::max(1.0, double(data.size()) - double(f.free_params));
   const auto se = standard_errors(problem, q.data(), 6, f.rms_N * f.rms_N * double(data.size()) / dof);
-  levels.sigma0_N_per_m = std::exp(q[0]);
-  levels.sigma1_Ns_per_m = std::exp(q[1]);
-  levels.coulomb_N = q[2];
-  levels.static_N = q[3];
-  levels.stribeck_velocity_m_per_s = q[4] * 1e-3;
-  levels.viscous_Ns_per_m = q[5];
+  levels.lugre.sigma0_N_per_m = std::exp(q[0]);
+  levels.lugre.sigma1_Ns_per_m = std::exp(q[1]);
+  levels.curve.coulomb_N = q[2];
+  levels.curve.static_N = q[3];
+  levels.curve.stribeck_velocity_m_per_s = q[4] * 1e-3;
+  levels.curve.viscous_Ns_per_m = q[5];
   f.friction = levels;
   f.params.push_back({"Fc_N", q[2], se[2], "N", false});
   f.params.push_back({"Fs_N", q[3], se[3], "N", false});
   f.params.push_back({"vs_mm_per_s", q[4], se[4], "mm/s", false});
-  f.params.push_back({"stribeck_exponent", levels.stribeck_exponent, 0.0, "-", true});
+  f.params.push_back({"stribeck_exponent", levels.curve.stribeck_exponent, 0.0, "-", true});
   f.params.push_back({"B_Ns_per_m", q[5], se[5], "N*s/m", false});
   if (o.pressure_dependent) {
-    f.params.push_back({"Fc_gain_N_per_MPa", levels.coulomb_gain_N_per_Pa * 1e6, 0.0, "N/MPa", true});
-    f.params.push_back({"Fs_gain_N_per_MPa", levels.static_gain_N_per_Pa * 1e6, 0.0, "N/MPa", true});
+    f.params.push_back(
+        {"Fc_gain_N_per_MPa", levels.pressure_gain.coulomb_N_per_Pa * 1e6, 0.0, "N/MPa", true});
+    f.params.push_back(
+        {"Fs_gain_N_per_MPa", levels.pressure_gain.static_N_per_Pa * 1e6, 0.0, "N/MPa", true});
   }
-  f.params.push_back({"sigma0_N_per_m", levels.sigma0_N_per_m, levels.sigma0_N_per_m * se[0], "N/m", false});
-  f.params.push_back({"sigma1_Ns_per_m", levels.sigma1_Ns_per_m, levels.sigma1_Ns_per_m * se[1], "N*s/m", false});
+  f.params.push_back({"sigma0_N_per_m", levels.lugre.sigma0_N_per_m,
+                      levels.lugre.sigma0_N_per_m * se[0], "N/m", false});
+  f.params.push_back({"sigma1_Ns_per_m", levels.lugre.sigma1_Ns_per_m,
+                      levels.lugre.sigma1_Ns_per_m * se[1], "N*s/m", false});
   return f;
 }
 
@@ -675,7 +680,7 @@ FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<s
       fit.models.push_back(model);
   }
   fit.pressure_dependent = pressure_dependent;
-  fit.fixed_exponent = scenario.friction.stribeck_exponent;
+  fit.fixed_exponent = scenario.friction.curve.stribeck_exponent;
   fit.start = scenario.friction;
   return fit;
 }

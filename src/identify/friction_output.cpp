@@ -184,19 +184,19 @@ std::string friction_scenario_toml(const ModelFit& f, const std::string& source)
                       : p.kind == FrictionKind::kLuGre ? "lugre"
                                                        : "stribeck";
   s += fmt::format("model = \"{}\"\n", model);
-  s += fmt::format("Fc_N = {:.6g}\n", p.coulomb_N);
-  s += fmt::format("Fs_N = {:.6g}\n", std::max(p.static_N, p.coulomb_N));
-  s += fmt::format("B_Ns_per_m = {:.6g}\n", p.viscous_Ns_per_m);
+  s += fmt::format("Fc_N = {:.6g}\n", p.curve.coulomb_N);
+  s += fmt::format("Fs_N = {:.6g}\n", std::max(p.curve.static_N, p.curve.coulomb_N));
+  s += fmt::format("B_Ns_per_m = {:.6g}\n", p.curve.viscous_Ns_per_m);
   if (p.kind != FrictionKind::kClassic) {
-    s += fmt::format("vs_mm_per_s = {:.6g}\n", p.stribeck_velocity_m_per_s * 1e3);
-    s += fmt::format("stribeck_exponent = {:.6g}\n", p.stribeck_exponent);
+    s += fmt::format("vs_mm_per_s = {:.6g}\n", p.curve.stribeck_velocity_m_per_s * 1e3);
+    s += fmt::format("stribeck_exponent = {:.6g}\n", p.curve.stribeck_exponent);
   }
   if (p.kind == FrictionKind::kLuGre) {
-    s += fmt::format("sigma0_N_per_m = {:.6g}\n", p.sigma0_N_per_m);
-    s += fmt::format("sigma1_Ns_per_m = {:.6g}\n", p.sigma1_Ns_per_m);
+    s += fmt::format("sigma0_N_per_m = {:.6g}\n", p.lugre.sigma0_N_per_m);
+    s += fmt::format("sigma1_Ns_per_m = {:.6g}\n", p.lugre.sigma1_Ns_per_m);
   }
-  s += fmt::format("Fc_gain_N_per_MPa = {:.6g}\n", p.coulomb_gain_N_per_Pa * 1e6);
-  s += fmt::format("Fs_gain_N_per_MPa = {:.6g}\n", p.static_gain_N_per_Pa * 1e6);
+  s += fmt::format("Fc_gain_N_per_MPa = {:.6g}\n", p.pressure_gain.coulomb_N_per_Pa * 1e6);
+  s += fmt::format("Fs_gain_N_per_MPa = {:.6g}\n", p.pressure_gain.static_N_per_Pa * 1e6);
   return s;
 }
 

@@ -29,8 +29,10 @@ void FrictionFitOptions::validate() const {
   check(fixed_exponent > 0.0, "friction fit fixed_exponent", fixed_exponent,
         "> 0 (the Stribeck curve's exponent)");
   check(max_iterations >= 1, "friction fit max_iterations", max_iterations, ">= 1");
-  check(start.coulomb_N > 0.0, "friction fit start.coulomb_N", start.coulomb_N, "> 0");
-  check(start.static_N > 0.0, "friction fit start.static_N", start.static_N, "> 0");
+  check(start.curve.coulomb_N > 0.0, "friction fit start.curve.coulomb_N", start.curve.coulomb_N,
+        "> 0");
+  check(start.curve.static_N > 0.0, "friction fit start.curve.static_N", start.curve.static_N,
+        "> 0");
 }
 
 }  // namespace pneumachaos::identify

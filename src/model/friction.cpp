@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "friction_models.hpp"
 
@@ -23,16 +24,18 @@ void FrictionModel::steady_state(const FrictionInput& /*in*/, std::span<double> 
 
 void FrictionModel::rest_state(std::span<double> z) const { std::fill(z.begin(), z.end(), 0.0); }
 
-std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params) {
+std::unique_ptr<FrictionModel> make_friction_model(
+    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table) {
+  std::shared_ptr<const TextureTable>& t = texture_table;
   switch (params.kind) {
     case FrictionKind::kClassic:
     case FrictionKind::kStribeck:
-      if (params.lagged()) return std::make_unique<StribeckLagFriction>(params);
-      return std::make_unique<StictionFriction>(params);
+      if (params.lagged()) return std::make_unique<StribeckLagFriction>(params, std::move(t));
+      return std::make_unique<StictionFriction>(params, std::move(t));
     case FrictionKind::kLuGre:
-      return std::make_unique<LuGreFriction>(params);
+      return std::make_unique<LuGreFriction>(params, std::move(t));
     case FrictionKind::kGms:
-      return std::make_unique<GmsFriction>(params);
+      return std::make_unique<GmsFriction>(params, std::move(t));
   }
   return nullptr;
 }

@@ -3,9 +3,7 @@
 
 namespace pneumachaos {
 
-std::size_t GmsFriction::state_count() const {
-  return static_cast<std::size_t>(p_.gms_elements);
-}
+std::size_t GmsFriction::state_count() const { return static_cast<std::size_t>(p_.gms.count); }
 
 // As LuGre's: the interface's smooth models read sgn v from v itself (no branch).
 double GmsFriction::force_N(const FrictionInput& in, int /*direction*/, std::span<const double> z,
@@ -25,14 +23,14 @@ double GmsFriction::holding_force_N(const FrictionInput& /*in*/,
 double GmsFriction::steady_force_N(const FrictionInput& in) const {
   const double v = in.v_m_per_s;
   const double sgn = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-  return sgn * friction_law::stribeck_level_N(p_, in, v) + p_.viscous_Ns_per_m * v;
+  return sgn * friction_law::stribeck_level_N(p_, in, v) + p_.curve.viscous_Ns_per_m * v;
 }
 
 void GmsFriction::steady_state(const FrictionInput& in, std::span<double> z) const {
   const double v = in.v_m_per_s;
   const double sgn = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
   const double g = friction_law::stribeck_level_N(p_, in, v);
-  for (int i = 0; i < p_.gms_elements; ++i)
+  for (int i = 0; i < p_.gms.count; ++i)
     z[static_cast<std::size_t>(i)] = sgn * friction_law::gms_reach_m(p_, i, g);
 }
 

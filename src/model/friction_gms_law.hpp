@@ -18,19 +18,19 @@ inline double gms_force_share(int i, int n) { return 2.0 * (i + 1) / (n * (n + 1
 /// Stiffness of one element: the total presliding stiffness in equal shares.
 template <typename P>
 double gms_element_stiffness(const P& p) {
-  return p.gms_stiffness_N_per_m / p.gms_elements;
+  return p.gms.stiffness_N_per_m / p.gms.count;
 }
 
 /// Deflection at which element i carries its share of the level g: where it slips.
 template <typename T, typename P>
 T gms_reach_m(const P& p, int i, const T& g) {
-  return gms_force_share(i, p.gms_elements) * g / gms_element_stiffness(p);
+  return gms_force_share(i, p.gms.count) * g / gms_element_stiffness(p);
 }
 
 /// Rate of that slip deflection while the level changes at dg/dt.
 template <typename P>
 double gms_share_rate(const P& p, int i, double dg_dt) {
-  return gms_force_share(i, p.gms_elements) * dg_dt / gms_element_stiffness(p);
+  return gms_force_share(i, p.gms.count) * dg_dt / gms_element_stiffness(p);
 }
 
 /// Slip weight of an element at utilisation q (its deflection over its slip deflection, in
@@ -48,7 +48,7 @@ T gms_slip_weight(T q) {
 /// attraction length L: dz/dt = (v r - |v| z) / L.
 template <typename T, typename P>
 T gms_attraction_rate(const P& p, const T& v, const T& speed, const T& z, const T& r) {
-  return (v * r - speed * z) / p.gms_attraction_length_m;
+  return (v * r - speed * z) / p.gms.attraction_length_m;
 }
 
 /// Rate of one element's deflection z at slip deflection r: (1 - w) v while it loads up to
@@ -75,11 +75,11 @@ T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz, int bran
   const T speed = branch == 0 ? T(abs(v)) : T(sgn * v);
   const T g = stribeck_level_N(p, in, speed, branch != 0);
   T elastic(0.0);
-  for (int i = 0; i < p.gms_elements; ++i) {
+  for (int i = 0; i < p.gms.count; ++i) {
     dz[i] = gms_element_rate(p, v, speed, sgn, z[i], gms_reach_m(p, i, g));
     elastic += z[i];
   }
-  return gms_element_stiffness(p) * elastic + p.viscous_Ns_per_m * v;
+  return gms_element_stiffness(p) * elastic + p.curve.viscous_Ns_per_m * v;
 }
 
 // ---- The quasi-static limit of the elements' loading (docs/model.md, "Friction") ----------
@@ -92,7 +92,7 @@ T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz, int bran
 /// coefficient times |v| / g: the quasi-static switch compares it with its threshold.
 template <typename P>
 double gms_loading_rate_per_speed_over_level(const P& p) {
-  const double last_share = gms_force_share(p.gms_elements - 1, p.gms_elements);
+  const double last_share = gms_force_share(p.gms.count - 1, p.gms.count);
   return 4.0 * gms_element_stiffness(p) / last_share;
 }
 
@@ -101,7 +101,7 @@ double gms_loading_rate_per_speed_over_level(const P& p) {
 template <typename P>
 double gms_distance_from_limit(const P& p, double g, const double* z, const double* on) {
   double worst = 0.0;
-  for (int i = 0; i < p.gms_elements; ++i)
+  for (int i = 0; i < p.gms.count; ++i)
     worst = std::max(worst, std::abs(z[i] - on[i]) / gms_reach_m(p, i, g));
   return worst;
 }
@@ -130,7 +130,7 @@ template <typename P>
 void gms_limit_deflections(const P& p, double v, double g, double dg_dt, const double* z,
                            double* out, int direction) {
   const double d = direction;
-  for (int i = 0; i < p.gms_elements; ++i) {
+  for (int i = 0; i < p.gms.count; ++i) {
     const double r = gms_reach_m(p, i, g);
     const double dr_dt = gms_share_rate(p, i, dg_dt);
     out[i] = d * gms_limit_deflection(d * z[i], r, dr_dt, d * v);
@@ -145,7 +145,7 @@ double gms_lag_force_N(const P& p, double v, double g, double dg_dt, const doubl
   std::array<double, kMaxGmsElements> on{};
   gms_limit_deflections(p, v, g, dg_dt, z, on.data(), direction);
   double lag = 0.0;
-  for (int i = 0; i < p.gms_elements; ++i)
+  for (int i = 0; i < p.gms.count; ++i)
     lag += gms_held_m(p, i, g, z[i], direction) - direction * on[i];
   return gms_element_stiffness(p) * lag;
 }
@@ -154,8 +154,7 @@ double gms_lag_force_N(const P& p, double v, double g, double dg_dt, const doubl
 /// share it tracks; the force is unchanged to within the settled condition's bound.
 template <typename P>
 void gms_settle_on_shares(const P& p, double g, double* z, int direction) {
-  for (int i = 0; i < p.gms_elements; ++i)
-    z[i] = direction * gms_held_m(p, i, g, z[i], direction);
+  for (int i = 0; i < p.gms.count; ++i) z[i] = direction * gms_held_m(p, i, g, z[i], direction);
 }
 
 /// The force with every element at d max(m_i, r_i), F = k sum d max(m_i, r_i) + B v: the
@@ -166,9 +165,8 @@ double gms_quasi_static_N(const P& p, const FrictionInput& in, const double* z, 
   const double d = direction;
   const double g = stribeck_level_N(p, in, d * in.v_m_per_s, true);
   double deflection = 0.0;
-  for (int i = 0; i < p.gms_elements; ++i)
-    deflection += d * gms_held_m(p, i, g, z[i], direction);
-  return gms_element_stiffness(p) * deflection + p.viscous_Ns_per_m * in.v_m_per_s;
+  for (int i = 0; i < p.gms.count; ++i) deflection += d * gms_held_m(p, i, g, z[i], direction);
+  return gms_element_stiffness(p) * deflection + p.curve.viscous_Ns_per_m * in.v_m_per_s;
 }
 
 /// The elements' rates in the limit, given the level g and its rate of change dg/dt: above
@@ -180,7 +178,7 @@ template <typename P>
 void gms_quasi_static_rates(const P& p, double v, double g, double dg_dt, const double* z,
                             double* dz, int direction) {
   const double d = direction;
-  for (int i = 0; i < p.gms_elements; ++i) {
+  for (int i = 0; i < p.gms.count; ++i) {
     const double r = gms_reach_m(p, i, g);
     if (d * z[i] > r) {
       dz[i] = gms_attraction_rate(p, v, d * v, z[i], r);

@@ -20,7 +20,7 @@ double StribeckLagFriction::holding_force_N(const FrictionInput& in,
 double StribeckLagFriction::steady_force_N(const FrictionInput& in) const {
   const double v = in.v_m_per_s;
   const double sgn = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-  return sgn * friction_law::stribeck_level_N(p_, in, v) + p_.viscous_Ns_per_m * v;
+  return sgn * friction_law::stribeck_level_N(p_, in, v) + p_.curve.viscous_Ns_per_m * v;
 }
 
 void StribeckLagFriction::steady_state(const FrictionInput& in, std::span<double> z) const {

@@ -4,9 +4,10 @@
 // FrictionModel classes and the Plant's right-hand side both call these; private to the
 // model module.
 //
-// The laws are also templated on the parameter type P: FrictionParams for the plant, or a
-// struct with the same members holding automatic-differentiation scalars when the friction
-// parameters themselves are fitted (src/identify/friction_fit.cpp).
+// The laws are also templated on the parameter type P: FrictionParams (or the models'
+// TabulatedFriction) for the plant, or a struct with the same members holding
+// automatic-differentiation scalars when the friction parameters themselves are fitted
+// (src/identify/friction_fits.cpp).
 //
 // The double instantiation kept the arithmetic of the hand-written laws it replaced,
 // operation for operation; since then it reads a textured bore's factor from the Plant's
@@ -27,7 +28,7 @@ T texture_factor(const P& p, const T& position_m) {
   using std::sin;
   // The Plant's table serves the double evaluations; the automatic-differentiation ones (the
   // Jacobian, the friction fits) take the sines, which differ by the table's bound at most.
-  if constexpr (std::is_same_v<T, double> && std::is_same_v<P, FrictionParams>) {
+  if constexpr (std::is_same_v<T, double> && std::is_same_v<P, TabulatedFriction>) {
     if (p.texture_table) {
       if (const std::optional<double> f = p.texture_table->at(position_m)) return *f;
     }
@@ -48,14 +49,14 @@ T textured_level_N(const Q& level_N, const Q& gain_N_per_Pa, const T& gauge_sum_
 /// Fc with its pressure dependence and texture (docs/model.md).
 template <typename T, typename P>
 T coulomb_N(const P& p, const BasicFrictionInput<T>& in) {
-  return textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa,
+  return textured_level_N(p.curve.coulomb_N, p.pressure_gain.coulomb_N_per_Pa, in.gauge_sum_Pa,
                           texture_factor(p, in.position_m));
 }
 
 /// Fs, likewise.
 template <typename T, typename P>
 T static_N(const P& p, const BasicFrictionInput<T>& in) {
-  return textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa,
+  return textured_level_N(p.curve.static_N, p.pressure_gain.static_N_per_Pa, in.gauge_sum_Pa,
                           texture_factor(p, in.position_m));
 }
 
@@ -69,8 +70,10 @@ struct Levels {
 template <typename T, typename P>
 Levels<T> levels_N(const P& p, const BasicFrictionInput<T>& in) {
   const T texture = texture_factor(p, in.position_m);
-  return {textured_level_N(p.coulomb_N, p.coulomb_gain_N_per_Pa, in.gauge_sum_Pa, texture),
-          textured_level_N(p.static_N, p.static_gain_N_per_Pa, in.gauge_sum_Pa, texture)};
+  return {textured_level_N(p.curve.coulomb_N, p.pressure_gain.coulomb_N_per_Pa, in.gauge_sum_Pa,
+                           texture),
+          textured_level_N(p.curve.static_N, p.pressure_gain.static_N_per_Pa, in.gauge_sum_Pa,
+                           texture)};
 }
 
 /// exp(-(|speed|/vs)^delta), the Stribeck drop's weight. `continued`: speed is a branch's
@@ -82,8 +85,9 @@ T stribeck_weight(const P& p, const T& speed, bool continued = false) {
   using std::exp;
   using std::pow;
   using std::sqrt;
-  const auto& delta = p.stribeck_exponent;  // double, or a fitted Jet
-  const T u = (continued && delta == 1.0 ? speed : T(abs(speed))) / p.stribeck_velocity_m_per_s;
+  const auto& delta = p.curve.stribeck_exponent;  // double, or a fitted Jet
+  const T u =
+      (continued && delta == 1.0 ? speed : T(abs(speed))) / p.curve.stribeck_velocity_m_per_s;
   // The common exponents avoid pow(), which dominated the derivative's cost.
   T w;
   if (delta == 2.0) {
@@ -116,7 +120,7 @@ T stiction_sliding_N(const P& p, const BasicFrictionInput<T>& in, int direction)
   if (speed < 0.0) speed = T(0.0);
   const T level =
       p.kind == FrictionKind::kClassic ? coulomb_N(p, in) : stribeck_level_N(p, in, speed);
-  return d * (level + p.viscous_Ns_per_m * speed);
+  return d * (level + p.curve.viscous_Ns_per_m * speed);
 }
 
 /// LuGre (Canudas de Wit et al. 1995): dz/dt = v - sigma0 |v| z / g(v),
@@ -129,8 +133,8 @@ T lugre_N(const P& p, const BasicFrictionInput<T>& in, const T& z, T& dz, int br
   const T& v = in.v_m_per_s;
   const T speed = branch == 0 ? T(abs(v)) : T(static_cast<double>(branch) * v);
   const T g = stribeck_level_N(p, in, speed, branch != 0);
-  dz = v - p.sigma0_N_per_m * speed * z / g;
-  return p.sigma0_N_per_m * z + p.sigma1_Ns_per_m * dz + p.viscous_Ns_per_m * v;
+  dz = v - p.lugre.sigma0_N_per_m * speed * z / g;
+  return p.lugre.sigma0_N_per_m * z + p.lugre.sigma1_Ns_per_m * dz + p.curve.viscous_Ns_per_m * v;
 }
 
 /// LuGre's quasi-static limit on a branch (docs/model.md, "Friction"): the bristle on its
@@ -142,7 +146,7 @@ T lugre_quasi_static_N(const P& p, const BasicFrictionInput<T>& in, T& dz, int b
   const double d = branch;
   const T speed = d * in.v_m_per_s;
   dz = T(0.0);
-  return d * stribeck_level_N(p, in, speed, true) + p.viscous_Ns_per_m * in.v_m_per_s;
+  return d * stribeck_level_N(p, in, speed, true) + p.curve.viscous_Ns_per_m * in.v_m_per_s;
 }
 
 /// Hess-Soom lag (docs/model.md): the Stribeck weight s lags the velocity by tau, writes
@@ -154,9 +158,9 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   const double d = direction;
   T speed = d * in.v_m_per_s;
   if (speed < 0.0) speed = T(0.0);
-  ds = (stribeck_weight(p, speed) - s) / p.lag_time_s;
+  ds = (stribeck_weight(p, speed) - s) / p.lag.time_s;
   const Levels<T> f = levels_N(p, in);
-  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.viscous_Ns_per_m * speed);
+  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.curve.viscous_Ns_per_m * speed);
 }
 
 }  // namespace pneumachaos::friction_law
@@ -171,7 +175,7 @@ namespace pneumachaos::friction_law {
 template <typename T, typename P>
 void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) dz[i] = T(0.0);
-  if (p.lagged()) dz[0] = (1.0 - z[0]) / p.lag_time_s;
+  if (p.lagged()) dz[0] = (1.0 - z[0]) / p.lag.time_s;
 }
 
 /// The force of whichever model `p.kind` names, while the contact moves; z and dz point to

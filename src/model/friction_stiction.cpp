@@ -19,7 +19,7 @@ double StictionFriction::steady_force_N(const FrictionInput& in) const {
   const double level = p_.kind == FrictionKind::kClassic
                            ? friction_law::coulomb_N(p_, in)
                            : friction_law::stribeck_level_N(p_, in, v);
-  return sgn * level + p_.viscous_Ns_per_m * v;
+  return sgn * level + p_.curve.viscous_Ns_per_m * v;
 }
 
 }  // namespace pneumachaos

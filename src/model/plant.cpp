@@ -24,7 +24,7 @@ void set_mode(Mode& m, std::size_t contact, ContactMode c) {
 // sigma0 |v| / g, the slowest GMS element loads at 4 |v| / r_N (docs/model.md, "Friction").
 double rate_per_speed_over_level(const FrictionParams& p) {
   if (p.kind == FrictionKind::kGms) return friction_law::gms_loading_rate_per_speed_over_level(p);
-  return p.sigma0_N_per_m;
+  return p.lugre.sigma0_N_per_m;
 }
 
 // An upper bound of that rate c |v| / g from a lower bound of g (its
@@ -35,8 +35,8 @@ double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, i
   double texture_low = 1.0;
   for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);
   const double gauge = std::min(in.gauge_sum_Pa, 0.0);
-  const double level_low = std::min(p.coulomb_N + p.coulomb_gain_N_per_Pa * gauge,
-                                    p.static_N + p.static_gain_N_per_Pa * gauge);
+  const double level_low = std::min(p.curve.coulomb_N + p.pressure_gain.coulomb_N_per_Pa * gauge,
+                                    p.curve.static_N + p.pressure_gain.static_N_per_Pa * gauge);
   const double g_low = level_low * texture_low;
   if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
   return rate_per_speed_over_level(p) * direction * in.v_m_per_s / g_low;
@@ -80,9 +80,10 @@ Plant::Plant(const Scenario& scenario)
   // load follows the piston through the mount); beyond it the sines are evaluated.
   constexpr double kTextureMargin_m = 0.05;
   const auto tabulated = [&](const FrictionParams& p) {
-    return with_texture_table(p, -kTextureMargin_m, geometry_.stroke_m + kTextureMargin_m);
+    return make_friction_model(
+        p, tabulate_texture(p.texture, -kTextureMargin_m, geometry_.stroke_m + kTextureMargin_m));
   };
-  seal_ = make_friction_model(tabulated(scenario.friction));
+  seal_ = tabulated(scenario.friction);
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
     layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), seal_->state_scale(),
@@ -92,7 +93,7 @@ Plant::Plant(const Scenario& scenario)
   piston_mass_ = spring ? load_.piston_mass_kg : load_.mass_kg;
   if (spring) {
     contacts_ = 2;
-    guide_ = make_friction_model(tabulated(load_.guide_friction));
+    guide_ = tabulated(load_.guide_friction);
     layout_.load_x = layout_.append("x_load", "m", 1e-3, StateBlock::kLoadBody);
     layout_.load_v = layout_.append("v_load", "m/s", 1e-2, StateBlock::kLoadBody);
     if (guide_->state_count() > 0) {
@@ -127,7 +128,7 @@ double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
                                   std::span<const double> x) const {
   constexpr double kSettled = 1e-4;
   const ContactMode m = mode_of(mode, contact);
-  const FrictionParams& p = friction_of(contact).params();
+  const TabulatedFriction& p = friction_of(contact).params();
   const FrictionInput in = friction_input<double>(contact, x);
   const int d = direction_of(m);
   const double on = p.quasi_static_threshold();
@@ -147,7 +148,7 @@ double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
     limit_deflections(contact, mode, x, on.data());
     return friction_law::gms_distance_from_limit(p, g, z, on.data()) / kSettled - 1.0;
   }
-  const double z0 = d * g / p.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
+  const double z0 = d * g / p.lugre.sigma0_N_per_m;  // the steady state, g sgn v / sigma0
   return std::max(1.0 - ratio, std::abs(*z - z0) / (kSettled * std::abs(z0)) - 1.0);
 }
 
@@ -157,7 +158,7 @@ double Plant::quasi_static_switch(std::size_t contact, const Mode& mode,
 // the limit's mode `quasi` before it is left.
 void Plant::settle_bristle(std::size_t contact, const Mode& quasi, bool entering,
                            std::span<double> x) const {
-  const FrictionParams& p = friction_of(contact).params();
+  const TabulatedFriction& p = friction_of(contact).params();
   const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
   const FrictionInput in = friction_input<double>(contact, std::span<const double>(x));
   if (p.kind != FrictionKind::kGms) {
@@ -169,7 +170,7 @@ void Plant::settle_bristle(std::size_t contact, const Mode& quasi, bool entering
   } else {
     std::array<double, kMaxGmsElements> on{};
     limit_deflections(contact, quasi, x, on.data());
-    std::copy_n(on.begin(), p.gms_elements, x.begin() + static_cast<std::ptrdiff_t>(z0));
+    std::copy_n(on.begin(), p.gms.count, x.begin() + static_cast<std::ptrdiff_t>(z0));
   }
 }
 
@@ -204,7 +205,7 @@ Plant::EventList Plant::active_events(const Mode& mode) const {
     } else if (direction_of(m) != 0) {
       add(EventType::kVelocityZero, c);
     }
-    const FrictionParams& p = friction_of(c).params();
+    const TabulatedFriction& p = friction_of(c).params();
     if ((m == ContactMode::kSmoothPos || m == ContactMode::kSmoothNeg) &&
         p.quasi_static_threshold() > 0.0)
       add(EventType::kQuasiEnter, c);  // LuGre's and GMS's: other models have no such limit

@@ -30,7 +30,7 @@ struct LevelRates {
 
 // `input` maps a dual state to the contact's friction input (Plant::friction_input).
 template <typename Input>
-LevelRates level_rates(const FrictionParams& p, int direction, std::span<const double> x,
+LevelRates level_rates(const TabulatedFriction& p, int direction, std::span<const double> x,
                        std::span<const double> dxdt, std::size_t iv, Input input) {
   const std::size_t n = x.size();
   if (n > kMaxStates) throw Error("friction.model", "too many states for the GMS limit");
@@ -52,7 +52,7 @@ LevelRates level_rates(const FrictionParams& p, int direction, std::span<const d
 // far below the limit's own neglected term; eight passes cost 20 % more CPU).
 void Plant::track_shares(std::size_t contact, int direction, double mass,
                          std::span<const double> x, std::span<double> dxdt) const {
-  const FrictionParams& p = friction_of(contact).params();
+  const TabulatedFriction& p = friction_of(contact).params();
   const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
   const std::size_t iv = contact == kSeal ? layout_.v : layout_.load_v;
   const LevelRates l = level_rates(p, direction, x, dxdt, iv, [&](std::span<const Dual2> xd) {
@@ -79,7 +79,7 @@ void Plant::limit_deflections(std::size_t contact, const Mode& mode, std::span<c
       static_cast<std::int8_t>(d > 0 ? ContactMode::kQuasiPos : ContactMode::kQuasiNeg);
   std::vector<double> dxdt(layout_.size);
   evaluate<double>(quasi, x, std::span<double>(dxdt));
-  const FrictionParams& p = friction_of(contact).params();
+  const TabulatedFriction& p = friction_of(contact).params();
   const std::size_t z0 = contact == kSeal ? layout_.seal_z : layout_.guide_z;
   const std::size_t iv = contact == kSeal ? layout_.v : layout_.load_v;
   const LevelRates l = level_rates(p, d, x, dxdt, iv, [&](std::span<const Dual2> xd) {

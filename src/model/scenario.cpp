@@ -21,31 +21,30 @@ constexpr double kMeterInS2 = 20e-6;
 // The GMS keys' own ranges, again for scenarios built in code; the elements' slip deflections
 // are shares of Fc and up, so Fc must be positive.
 void check_gms(const FrictionParams& f, const std::string& prefix) {
-  if (f.gms_elements < 1 || f.gms_elements > kMaxGmsElements) {
+  if (f.gms.count < 1 || f.gms.count > kMaxGmsElements) {
     throw Error(prefix + "gms_elements",
-                fmt::format("{} is out of range: expected 1 to {}", f.gms_elements,
-                            kMaxGmsElements));
+                fmt::format("{} is out of range: expected 1 to {}", f.gms.count, kMaxGmsElements));
   }
-  if (!(f.gms_stiffness_N_per_m > 0.0)) {
+  if (!(f.gms.stiffness_N_per_m > 0.0)) {
     throw Error(prefix + "gms_stiffness_N_per_m",
-                fmt::format("{} N/m is out of range: expected > 0", f.gms_stiffness_N_per_m));
+                fmt::format("{} N/m is out of range: expected > 0", f.gms.stiffness_N_per_m));
   }
-  if (!(f.gms_attraction_length_m > 0.0)) {
-    throw Error(prefix + "gms_attraction_length_um",
-                fmt::format("{} um is out of range: expected > 0",
-                            f.gms_attraction_length_m * 1e6));
+  if (!(f.gms.attraction_length_m > 0.0)) {
+    throw Error(
+        prefix + "gms_attraction_length_um",
+        fmt::format("{} um is out of range: expected > 0", f.gms.attraction_length_m * 1e6));
   }
-  if (!(f.coulomb_N > 0.0)) {
+  if (!(f.curve.coulomb_N > 0.0)) {
     throw Error(prefix + "Fc_N", "the gms model needs Fc > 0: its elements slip at shares of it");
   }
 }
 
 void check_friction(const FrictionParams& f, const std::string& prefix) {
-  if (f.static_N < f.coulomb_N) {
+  if (f.curve.static_N < f.curve.coulomb_N) {
     throw Error(prefix + "Fs_N",
                 fmt::format("static friction Fs = {} N must be >= Coulomb friction "
                             "Fc = {} N ({}Fc_N)",
-                            f.static_N, f.coulomb_N, prefix));
+                            f.curve.static_N, f.curve.coulomb_N, prefix));
   }
   if (f.memory == FrictionMemory::kLag && f.kind != FrictionKind::kStribeck) {
     throw Error(prefix + "memory", fmt::format("the lag acts on the Stribeck drop: needs {}model "
@@ -53,7 +52,8 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
                                                prefix, friction_kind_name(f.kind)));
   }
   if (f.kind == FrictionKind::kGms) check_gms(f, prefix);
-  if (f.kind != FrictionKind::kClassic && f.static_gain_N_per_Pa < f.coulomb_gain_N_per_Pa) {
+  const PressureGains& gain = f.pressure_gain;
+  if (f.kind != FrictionKind::kClassic && gain.static_N_per_Pa < gain.coulomb_N_per_Pa) {
     throw Error(prefix + "Fs_gain_N_per_MPa",
                 "must be >= " + prefix + "Fc_gain_N_per_MPa so that Fs >= Fc at every pressure");
   }
@@ -144,26 +144,26 @@ Scenario default_scenario() {
   // negative slope of the paper's Fig. 3 at its operating speeds. With the moving mass this
   // stroke implies, only the GMS seal stayed chaotic (the LuGre seal of the previous default
   // did not, search 22).
-  s.friction.kind = FrictionKind::kGms;
-  s.friction.coulomb_N = 19.7;
-  s.friction.static_N = 47.0;
-  s.friction.stribeck_velocity_m_per_s = 0.045;
-  s.friction.stribeck_exponent = 1.0;
-  s.friction.viscous_Ns_per_m = 26.0;
-  // 4 elements sharing 1e6 N/m, 250 um to reach their level: the stiff presliding of
+  // 4 GMS elements sharing 1e6 N/m, 250 um to reach their level: the stiff presliding of
   // candidates G and H (an assumption: no measured value for a 40 mm lip seal, search 21).
-  s.friction.gms_elements = 4;
-  s.friction.gms_stiffness_N_per_m = 1.0e6;
-  s.friction.gms_attraction_length_m = 250e-6;
-  // The elements' quasi-static limit where the contact slides fast (docs/model.md,
-  // "Friction"): 32000 1/s is the lowest threshold tried that the chaotic (S2 0.35 mm^2) and
-  // stick-slip (0.05-0.20) points never reach, as LuGre's 4000 1/s on the earlier rig; the
-  // fast-sliding rows it enters stay within the default tolerances' own error.
-  s.friction.gms_quasi_static_rate_per_s = 32000.0;
+  // Their quasi-static limit where the contact slides fast (docs/model.md, "Friction"):
+  // 32000 1/s is the lowest threshold tried that the chaotic (S2 0.35 mm^2) and stick-slip
+  // (0.05-0.20) points never reach, as LuGre's 4000 1/s on the earlier rig; the fast-sliding
+  // rows it enters stay within the default tolerances' own error.
   // The LuGre bristles of the earlier default (Canudas de Wit et al. 1995), unused by GMS:
   // kept so that `--set friction.model=lugre` gives search 22's LuGre comparison.
-  s.friction.sigma0_N_per_m = 1.0e5;
-  s.friction.sigma1_Ns_per_m = 26.0;
+  s.friction.kind = FrictionKind::kGms;
+  s.friction.curve = {.coulomb_N = 19.7,
+                      .static_N = 47.0,
+                      .viscous_Ns_per_m = 26.0,
+                      .stribeck_velocity_m_per_s = 0.045,
+                      .stribeck_exponent = 1.0};
+  s.friction.gms = {.count = 4,
+                    .stiffness_N_per_m = 1.0e6,
+                    .attraction_length_m = 250e-6,
+                    .quasi_static_rate_per_s = 32000.0};
+  s.friction.lugre.sigma0_N_per_m = 1.0e5;
+  s.friction.lugre.sigma1_Ns_per_m = 26.0;
   // The load rides its own linear guide and is coupled to the rod by a compliant mount, the
   // lightly damped second degree of freedom near the pneumatic frequency that chaos needs.
   s.load.coupling = LoadCoupling::kSpring;
@@ -176,18 +176,18 @@ Scenario default_scenario() {
   // (ratio 0.04; the 0.06 of the earlier rig, 11 N*s/m, lost the Fig. 7 row there).
   s.load.coupling_stiffness_N_per_m = 12.46e3;
   s.load.coupling_damping_Ns_per_m = 7.0;
+  // Every guide field not named here at its default.
   FrictionParams& guide = s.load.guide_friction;
-  guide = FrictionParams{};  // every field not named below at its default
+  guide = FrictionParams{};
   guide.kind = FrictionKind::kLuGre;
-  guide.coulomb_N = 12.5;
-  guide.static_N = 13.5;
-  guide.viscous_Ns_per_m = 16.0;
-  guide.stribeck_velocity_m_per_s = 0.0037;
-  guide.stribeck_exponent = 0.5;
-  guide.sigma0_N_per_m = 1.9e5;
-  guide.sigma1_Ns_per_m = 86.0;
-  guide.coulomb_gain_N_per_Pa = 0.0;
-  guide.static_gain_N_per_Pa = 0.0;
+  guide.curve = {.coulomb_N = 12.5,
+                 .static_N = 13.5,
+                 .viscous_Ns_per_m = 16.0,
+                 .stribeck_velocity_m_per_s = 0.0037,
+                 .stribeck_exponent = 0.5};
+  guide.pressure_gain = {.coulomb_N_per_Pa = 0.0, .static_N_per_Pa = 0.0};
+  guide.lugre.sigma0_N_per_m = 1.9e5;
+  guide.lugre.sigma1_Ns_per_m = 86.0;
   // The chamber volumes follow the piston over the 500 mm stroke (a catalogue stroke of a
   // 40 mm bore, which comes up to ~1 m); a run ends at the stroke end, at the Fig. 7 point
   // after about 7.5 s, so the frozen position is off (the key stays for studies).

@@ -102,24 +102,25 @@ template <typename Ref>
 void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref) {
   KeySpec count = number(
       prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)", 1.0,
-      Range{1.0, static_cast<double>(kMaxGmsElements)},
-      [ref](auto& s) -> auto& { return ref(s).gms_elements; });
+      Range{1.0, static_cast<double>(kMaxGmsElements)}, [ref](auto& s) -> auto& {
+        return ref(s).gms.count;
+      });
   count.whole = true;
-  count.set_number = [ref](Scenario& sc, double n) { ref(sc).gms_elements = static_cast<int>(n); };
+  count.set_number = [ref](Scenario& sc, double n) { ref(sc).gms.count = static_cast<int>(n); };
   keys.push_back(std::move(count));
   keys.push_back(number(
       prefix + "gms_stiffness_N_per_m", "N/m",
-      "gms: total presliding stiffness, in equal shares over the elements", 1.0, kPositive,
-      [ref](auto& s) -> auto& { return ref(s).gms_stiffness_N_per_m; }));
+      "gms: total presliding stiffness, in equal shares over the elements", 1.0,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).gms.stiffness_N_per_m; }));
   keys.push_back(number(
       prefix + "gms_attraction_length_um", "um",
       "gms: sliding distance over which a slipping element reaches its share of the level", 1e-6,
-      kPositive, [ref](auto& s) -> auto& { return ref(s).gms_attraction_length_m; }));
+      kPositive, [ref](auto& s) -> auto& { return ref(s).gms.attraction_length_m; }));
   keys.push_back(number(
       prefix + "gms_quasi_static_rate", "1/s",
       "gms: loading rate 4 |v| / r of the slowest element above which the elements are taken "
       "on their shares' slow manifold (0: never; off by default, docs/notes/performance.md)",
-      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).gms_quasi_static_rate_per_s; }));
+      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).gms.quasi_static_rate_per_s; }));
 }
 
 // The same friction keys serve the piston seal ("friction.") and the load guide
@@ -132,25 +133,25 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       {"classic", "stribeck", "lugre", "gms"}, [ref](auto& s) -> auto& { return ref(s).kind; }));
   keys.push_back(number(
       prefix + "Fc_N", "N", "Coulomb (kinetic) friction Fc", 1.0,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_N; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).curve.coulomb_N; }));
   keys.push_back(number(
       prefix + "Fs_N", "N", "static (breakaway) friction Fs, >= Fc", 1.0,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_N; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).curve.static_N; }));
   keys.push_back(number(
       prefix + "B_Ns_per_m", "N*s/m", "viscous coefficient B (sigma2 for lugre)", 1.0,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).viscous_Ns_per_m; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).curve.viscous_Ns_per_m; }));
   keys.push_back(number(
       prefix + "vs_mm_per_s", "mm/s", "Stribeck velocity vs", 1e-3,
-      kPositive, [ref](auto& s) -> auto& { return ref(s).stribeck_velocity_m_per_s; }));
+      kPositive, [ref](auto& s) -> auto& { return ref(s).curve.stribeck_velocity_m_per_s; }));
   keys.push_back(number(
       prefix + "stribeck_exponent", "-", "exponent delta of exp(-(|v|/vs)^delta)", 1.0,
-      Range{0.1, 10.0}, [ref](auto& s) -> auto& { return ref(s).stribeck_exponent; }));
+      Range{0.1, 10.0}, [ref](auto& s) -> auto& { return ref(s).curve.stribeck_exponent; }));
   keys.push_back(number(
       prefix + "sigma0_N_per_m", "N/m", "LuGre bristle stiffness sigma0", 1.0,
-      kPositive, [ref](auto& s) -> auto& { return ref(s).sigma0_N_per_m; }));
+      kPositive, [ref](auto& s) -> auto& { return ref(s).lugre.sigma0_N_per_m; }));
   keys.push_back(number(
       prefix + "sigma1_Ns_per_m", "N*s/m", "LuGre bristle damping sigma1", 1.0,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).sigma1_Ns_per_m; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).lugre.sigma1_Ns_per_m; }));
   add_gms_keys(keys, prefix, ref);
   keys.push_back(word<FrictionMemory>(
       prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
@@ -159,18 +160,18 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       prefix + "quasi_static_rate", "1/s",
       "lugre only: bristle relaxation rate sigma0 |v| / g above which the bristle is taken "
       "on its steady state (0: never)",
-      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).quasi_static_rate_per_s; }));
+      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).lugre.quasi_static_rate_per_s; }));
   keys.push_back(number(
       prefix + "lag_time_ms", "ms", "time constant of the Stribeck drop's lag (memory = lag)", 1e-3,
-      kPositive, [ref](auto& s) -> auto& { return ref(s).lag_time_s; }));
+      kPositive, [ref](auto& s) -> auto& { return ref(s).lag.time_s; }));
   keys.push_back(number(
       prefix + "Fc_gain_N_per_MPa", "N/MPa",
       "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).coulomb_gain_N_per_Pa; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).pressure_gain.coulomb_N_per_Pa; }));
   keys.push_back(number(
       prefix + "Fs_gain_N_per_MPa", "N/MPa",
       "pressure dependence: Fs grows by this per MPa of P1+P2-2Pa", 1e-6,
-      kNonNegative, [ref](auto& s) -> auto& { return ref(s).static_gain_N_per_Pa; }));
+      kNonNegative, [ref](auto& s) -> auto& { return ref(s).pressure_gain.static_N_per_Pa; }));
 }
 
 // A speed controller's effective area (ISO 6358 C converted to mm^2) is a few mm^2 for the

@@ -41,9 +41,10 @@ std::optional<double> TextureTable::at(double position_m) const {
          u * u * (3.0 - 2.0 * u) * value_[j + 1] - u * u * w * slope_[j + 1];
 }
 
-FrictionParams with_texture_table(FrictionParams p, double from_m, double to_m) {
-  if (!p.texture.empty()) p.texture_table = std::make_shared<const TextureTable>(p.texture, from_m, to_m);
-  return p;
+std::shared_ptr<const TextureTable> tabulate_texture(std::span<const TextureMode> modes,
+                                                     double from_m, double to_m) {
+  if (modes.empty()) return nullptr;
+  return std::make_shared<const TextureTable>(modes, from_m, to_m);
 }
 
 }  // namespace pneumachaos

@@ -4,6 +4,7 @@
 // four library sines per contact and evaluation were a fifth of a textured sweep run's time.
 // Private to the model module.
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -38,8 +39,8 @@ class TextureTable {
   std::vector<double> slope_;  ///< its derivative times the step, at each node
 };
 
-/// A copy of `p` carrying the table of its texture over [from_m, to_m] (unchanged when it
-/// has no texture).
-FrictionParams with_texture_table(FrictionParams p, double from_m, double to_m);
+/// The table of `modes` over [from_m, to_m], for make_friction_model; null when there are none.
+std::shared_ptr<const TextureTable> tabulate_texture(std::span<const TextureMode> modes,
+                                                     double from_m, double to_m);
 
 }  // namespace pneumachaos

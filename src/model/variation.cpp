@@ -26,11 +26,12 @@ void vary_friction(FrictionParams& f, const VariationParams& v, std::mt19937_64&
     const auto scale = [&](double& p) {
       p *= std::max(0.2, 1.0 + v.friction_rel_sd * normal(rng));
     };
-    for (double* p : {&f.coulomb_N, &f.static_N, &f.viscous_Ns_per_m, &f.stribeck_velocity_m_per_s,
-                      &f.sigma0_N_per_m, &f.sigma1_Ns_per_m}) {
+    for (double* p :
+         {&f.curve.coulomb_N, &f.curve.static_N, &f.curve.viscous_Ns_per_m,
+          &f.curve.stribeck_velocity_m_per_s, &f.lugre.sigma0_N_per_m, &f.lugre.sigma1_Ns_per_m}) {
       scale(*p);
     }
-    f.static_N = std::max(f.static_N, f.coulomb_N);
+    f.curve.static_N = std::max(f.curve.static_N, f.curve.coulomb_N);
   }
   if (v.texture_rel > 0.0) {
     f.texture.clear();

@@ -4,6 +4,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pneumachaos {
@@ -27,48 +28,81 @@ class TextureTable;  // src/model/texture_table.hpp
 /// Most elements a GMS seal may have (each is one ODE state).
 inline constexpr int kMaxGmsElements = 10;
 
-/// Parameters shared by all friction models; each model reads the ones it needs.
-/// Forces in N, velocities in m/s, pressures in Pa.
-struct FrictionParams {
-  FrictionKind kind = FrictionKind::kStribeck;
-  double coulomb_N = 20.0;                  ///< Fc, kinetic friction level
-  double static_N = 40.0;                   ///< Fs, breakaway (stiction) level
-  double viscous_Ns_per_m = 30.0;           ///< B (classic, stribeck) = sigma2 (lugre)
-  double stribeck_velocity_m_per_s = 0.01;  ///< vs
-  double stribeck_exponent = 2.0;           ///< delta in exp(-(|v|/vs)^delta)
-  double sigma0_N_per_m = 1.0e5;            ///< LuGre bristle stiffness
-  double sigma1_Ns_per_m = 300.0;           ///< LuGre bristle damping
-  /// Pressure dependence (docs/model.md, "Friction"): Fc = Fc0 + gain * (P1 + P2 - 2 Pa), same for Fs.
-  double coulomb_gain_N_per_Pa = 0.0;
-  double static_gain_N_per_Pa = 0.0;
-  /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
-  std::vector<TextureMode> texture;
-  /// The texture tabulated along the stroke, which the Plant builds for its contacts (an
-  /// evaluation cache: docs/model.md, "Friction"); positions outside it use the sines.
-  std::shared_ptr<const TextureTable> texture_table = nullptr;
-  FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
-  /// Time constant of the Stribeck drop's lag behind the velocity (memory = kLag).
-  double lag_time_s = 0.005;
-  /// Generalized Maxwell-slip (kind = kGms; docs/model.md, "Friction"): number of elements,
-  /// their total presliding stiffness (equal shares) and the sliding distance over which a
-  /// slipping element is attracted to its share of the Stribeck level.
-  int gms_elements = 4;  ///< 1 to kMaxGmsElements
-  double gms_stiffness_N_per_m = 1.0e5;
-  double gms_attraction_length_m = 250e-6;
-  /// LuGre in the Plant: the bristle relaxation rate sigma0 |v| / g(v) [1/s] above which the
+// Each model's parameters in a struct of their own (docs/model.md, "Friction"). The ones the
+// friction fits adjust are templates on the scalar type, as BasicFrictionInput: double here,
+// an automatic-differentiation scalar in the fits (src/identify/friction_fits.cpp).
+
+/// The friction-velocity curve every model builds on, g(v) = Fc + (Fs - Fc) exp(-(|v|/vs)^delta),
+/// and the viscous term B v. Forces in N, velocities in m/s.
+template <typename T>
+struct BasicStribeckCurve {
+  T coulomb_N = T(20.0);                  ///< Fc, kinetic friction level
+  T static_N = T(40.0);                   ///< Fs, breakaway (stiction) level
+  T viscous_Ns_per_m = T(30.0);           ///< B (classic, stribeck) = sigma2 (lugre)
+  T stribeck_velocity_m_per_s = T(0.01);  ///< vs
+  T stribeck_exponent = T(2.0);           ///< delta in exp(-(|v|/vs)^delta)
+};
+using StribeckCurve = BasicStribeckCurve<double>;
+
+/// Pressure dependence (docs/model.md, "Friction"): Fc = Fc0 + coulomb_N_per_Pa (P1 + P2 - 2 Pa)
+/// with Fc0 the curve's level, Fs likewise with static_N_per_Pa.
+template <typename T>
+struct BasicPressureGains {
+  T coulomb_N_per_Pa = T(0.0);
+  T static_N_per_Pa = T(0.0);
+};
+using PressureGains = BasicPressureGains<double>;
+
+/// LuGre's bristles (kind = kLuGre): dz/dt = v - sigma0 |v| z / g(v),
+/// F = sigma0 z + sigma1 dz/dt + B v.
+template <typename T>
+struct BasicLuGreBristles {
+  T sigma0_N_per_m = T(1.0e5);   ///< bristle stiffness
+  T sigma1_Ns_per_m = T(300.0);  ///< bristle damping
+  /// In the Plant: the bristle relaxation rate sigma0 |v| / g(v) [1/s] above which the
   /// bristle is taken on its steady state z = g sgn v / sigma0 (left again below half of it;
   /// docs/model.md, "Friction"); 0: never. The bristle's stiffness bounds an explicit step.
   double quasi_static_rate_per_s = 4000.0;
-  /// GMS in the Plant: the slowest element's loading rate 4 |v| / r_N [1/s] above which the
+};
+using LuGreBristles = BasicLuGreBristles<double>;
+
+/// Generalized Maxwell-slip elements (kind = kGms; docs/model.md, "Friction"): their number,
+/// their total presliding stiffness (equal shares) and the sliding distance over which a
+/// slipping element is attracted to its share of the Stribeck level.
+struct GmsElements {
+  int count = 4;  ///< 1 to kMaxGmsElements
+  double stiffness_N_per_m = 1.0e5;
+  double attraction_length_m = 250e-6;
+  /// In the Plant: the slowest element's loading rate 4 |v| / r_N [1/s] above which the
   /// elements are taken on their quasi-static limit (docs/model.md, "Friction"); 0: never.
   /// Off unless set: at thresholds the chaotic point reaches, the limit moves it beyond its
   /// integration error; the default scenario sets one that only fast sliding reaches
   /// (docs/notes/performance.md, "The GMS seal's quasi-static limit").
-  double gms_quasi_static_rate_per_s = 0.0;
+  double quasi_static_rate_per_s = 0.0;
+};
+
+/// The Stribeck drop's lag behind the velocity (kind = kStribeck, memory = kLag).
+struct StribeckLag {
+  double time_s = 0.005;  ///< time constant
+};
+
+/// A seal's friction: the model `kind` (with `memory` for stribeck) and each model's
+/// parameters, which are kept when the kind changes; a model reads the curve, the pressure
+/// gains and the texture, and its own struct.
+struct FrictionParams {
+  FrictionKind kind = FrictionKind::kStribeck;
+  FrictionMemory memory = FrictionMemory::kNone;  ///< stribeck only
+  StribeckCurve curve;
+  PressureGains pressure_gain;
+  /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
+  std::vector<TextureMode> texture;
+  LuGreBristles lugre;
+  GmsElements gms;
+  StribeckLag lag;
   /// The threshold of this model's quasi-static limit (0: none).
   [[nodiscard]] double quasi_static_threshold() const {
-    if (kind == FrictionKind::kGms) return gms_quasi_static_rate_per_s;
-    return kind == FrictionKind::kLuGre ? quasi_static_rate_per_s : 0.0;
+    if (kind == FrictionKind::kGms) return gms.quasi_static_rate_per_s;
+    return kind == FrictionKind::kLuGre ? lugre.quasi_static_rate_per_s : 0.0;
   }
   /// The fraction of that threshold at which the limit is left again (hysteresis). GMS leaves
   /// earlier than LuGre: its first-order lag is poorest where the contact decelerates through
@@ -80,6 +114,15 @@ struct FrictionParams {
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
   }
+};
+
+/// The parameters as a FrictionModel evaluates them: the user's, with the bore's texture
+/// tabulated along the stroke when the Plant built the model (an evaluation cache, not a
+/// parameter: docs/model.md, "Friction"); positions outside the table use the sines.
+struct TabulatedFriction : FrictionParams {
+  TabulatedFriction(const FrictionParams& p, std::shared_ptr<const TextureTable> table)
+      : FrictionParams(p), texture_table(std::move(table)) {}
+  std::shared_ptr<const TextureTable> texture_table;
 };
 
 /// What a friction model sees of the plant, in the scalar type of the evaluation (double,
@@ -94,7 +137,10 @@ using FrictionInput = BasicFrictionInput<double>;
 
 class FrictionModel {
  public:
-  explicit FrictionModel(const FrictionParams& p) : p_(p) {}
+  /// `texture_table`: the texture of `p` tabulated (the Plant's; null: the sines).
+  explicit FrictionModel(const FrictionParams& p,
+                         std::shared_ptr<const TextureTable> texture_table = nullptr)
+      : p_(p, std::move(texture_table)) {}
   virtual ~FrictionModel() = default;
 
   /// Internal states carried in the ODE state (LuGre: bristle deflection z [m]).
@@ -128,13 +174,14 @@ class FrictionModel {
   /// Steady internal state at constant velocity (zero for models without state).
   virtual void steady_state(const FrictionInput& in, std::span<double> z) const;
 
-  [[nodiscard]] const FrictionParams& params() const { return p_; }
+  [[nodiscard]] const TabulatedFriction& params() const { return p_; }
 
  protected:
-  FrictionParams p_;
+  TabulatedFriction p_;
 };
 
-std::unique_ptr<FrictionModel> make_friction_model(const FrictionParams& params);
+std::unique_ptr<FrictionModel> make_friction_model(
+    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table = nullptr);
 const char* friction_kind_name(FrictionKind kind);
 
 }  // namespace pneumachaos

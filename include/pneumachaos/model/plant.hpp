@@ -31,7 +31,7 @@ enum class ContactMode : std::int8_t {
   /// LuGre or GMS moving with v > 0 (v < 0) fast enough that its bristle (its elements)
   /// relaxes far quicker than anything else moves: the bristle is taken on its steady state,
   /// the elements that reached their shares on them (quasi-static limit,
-  /// FrictionParams::quasi_static_rate_per_s; docs/model.md, "Friction").
+  /// FrictionParams::quasi_static_threshold(); docs/model.md, "Friction").
   kQuasiPos = 7,
   kQuasiNeg = 8,
 };

@@ -40,8 +40,17 @@ struct LoadParams {
   double piston_mass_kg = 0.5;  ///< piston + rod, spring coupling only
   double coupling_stiffness_N_per_m = 8.0e3;
   double coupling_damping_Ns_per_m = 7.0;
-  FrictionParams guide_friction{
-      FrictionKind::kStribeck, 10.0, 12.0, 10.0, 0.004, 1.0, 1.0e5, 50.0, 0.0, 0.0, {}};
+  FrictionParams guide_friction = [] {
+    FrictionParams f;  // stribeck, every field not named here at its default
+    f.curve = {.coulomb_N = 10.0,
+               .static_N = 12.0,
+               .viscous_Ns_per_m = 10.0,
+               .stribeck_velocity_m_per_s = 0.004,
+               .stribeck_exponent = 1.0};
+    f.lugre.sigma0_N_per_m = 1.0e5;
+    f.lugre.sigma1_Ns_per_m = 50.0;
+    return f;
+  }();
 };
 
 /// Run-to-run and seal-to-seal variation (docs/model.md, "Friction"; docs/sweep.md): what makes repeated runs of a
