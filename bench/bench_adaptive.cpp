@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "adaptive_cases.hpp"
-#include "pneumachaos/sweep/map_agreement.hpp"
+#include "sweep/map_agreement.hpp"
 
 int main(int argc, char** argv) {
   using namespace pneumachaos;

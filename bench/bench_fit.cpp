@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "pneumachaos/identify/fit.hpp"
-#include "pneumachaos/identify/fit_synthetic.hpp"
+#include "identify/fit_synthetic.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 
 namespace {

@@ -12,7 +12,7 @@
 #include <nanoflann.hpp>
 
 #include "../tests/reference_series.hpp"
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "analysis/delay_embedding.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "pneumachaos/calibrate/measured_map.hpp"
+#include "calibrate/measured_map.hpp"
 #include "pneumachaos/core/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

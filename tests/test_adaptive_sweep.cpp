@@ -14,7 +14,7 @@
 #include "adaptive_cases.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
-#include "pneumachaos/sweep/map_agreement.hpp"
+#include "sweep/map_agreement.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 #include "sweep_test_files.hpp"
 

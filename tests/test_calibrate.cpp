@@ -8,8 +8,8 @@
 
 #include "pneumachaos/calibrate/calibrate.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/calibrate/measured_map.hpp"
-#include "pneumachaos/calibrate/optimizer.hpp"
+#include "calibrate/measured_map.hpp"
+#include "calibrate/optimizer.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 

@@ -10,7 +10,7 @@
 
 #include "calibrate/evaluator.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/calibrate/measured_map.hpp"
+#include "calibrate/measured_map.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos {

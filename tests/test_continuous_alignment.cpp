@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "pneumachaos/analysis/continuous_alignment.hpp"
+#include "analysis/continuous_alignment.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -17,7 +17,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
-#include "pneumachaos/identify/fit_synthetic.hpp"
+#include "identify/fit_synthetic.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 
 namespace {

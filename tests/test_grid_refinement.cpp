@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/sweep/grid_refinement.hpp"
+#include "sweep/grid_refinement.hpp"
 
 namespace pneumachaos {
 namespace {

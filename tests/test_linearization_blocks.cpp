@@ -7,7 +7,7 @@
 #include <complex>
 
 #include "simple_rig.hpp"
-#include "pneumachaos/stability/linearization.hpp"
+#include "stability/linearization.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -10,7 +10,7 @@
 #include "pneumachaos/identify/friction_fits.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
-#include "pneumachaos/analysis/local_stretching.hpp"
+#include "analysis/local_stretching.hpp"
 #include "pneumachaos/analysis/prediction_error.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"

@@ -13,7 +13,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
-#include "pneumachaos/report/figures.hpp"
+#include "report/figures.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
 

@@ -9,7 +9,7 @@
 #include "pneumachaos/core/error.hpp"
 #include "simple_rig.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
-#include "pneumachaos/stability/linearization.hpp"
+#include "stability/linearization.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
 
 namespace pneumachaos {

@@ -8,7 +8,7 @@
 
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/analysis/fft.hpp"
+#include "analysis/fft.hpp"
 #include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"

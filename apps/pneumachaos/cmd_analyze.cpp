@@ -10,6 +10,7 @@
 #include "flag_names.hpp"
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 
@@ -99,7 +100,7 @@ Action add_analyze(CLI::App& app) {
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
     const TimeSeries series = with_flag_names(
-        FlagNames{{"from", "--from"}, {"to", "--to"}},
+        FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
         [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
     const Channel& channel = series.channels().front();
     const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);

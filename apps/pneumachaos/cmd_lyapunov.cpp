@@ -10,6 +10,7 @@
 #include "flag_names.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/simulate/event_integrator.hpp"
 #include "pneumachaos/simulate/lyapunov_output.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
@@ -57,12 +58,12 @@ Action add_lyapunov(CLI::App& app) {
     if (!(std::isfinite(args->tolerance_factor) && args->tolerance_factor > 0.0)) {
       throw Error("--tolerance-factor", "must be a positive number");
     }
-    const FlagNames flags{{"lyapunov.measure_s", "--measure"},
-                          {"lyapunov.renormalize_s", "--renormalize"},
-                          {"lyapunov.transient_s", "--transient"},
-                          {"lyapunov.separation", "--separation"},
-                          {"relative_tolerance", "--tolerance-factor"},
-                          {"absolute_tolerance", "--tolerance-factor"}};
+    const FlagNames flags{{ModelLyapunovOptions::kMeasureField.id, "--measure"},
+                          {ModelLyapunovOptions::kRenormalizeField.id, "--renormalize"},
+                          {ModelLyapunovOptions::kTransientField.id, "--transient"},
+                          {ModelLyapunovOptions::kSeparationField.id, "--separation"},
+                          {IntegratorOptions::kRelativeToleranceField.id, "--tolerance-factor"},
+                          {IntegratorOptions::kAbsoluteToleranceField.id, "--tolerance-factor"}};
     const ModelLyapunovResult r = with_flag_names(
         flags, [&] { return plant_lyapunov(plant, scenario.run, o, args->tolerance_factor); });
     if (!r.ok) {

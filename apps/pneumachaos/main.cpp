@@ -2,9 +2,9 @@
 //
 // The commands that need neither Ceres (friction, fit) nor the report (reproduce) run in this
 // program. Every other command line, the overall --help and --version included, goes to the
-// module libpneumachaos_cli.so, which holds every command: loading Ceres with SuiteSparse,
-// BLAS and LAPACK cost each start 1.4 ms of CPU, 5 % of an `analyze` of 1e4 samples
-// (docs/notes/performance.md, "Start-up"; docs/architecture.md).
+// module libpneumachaos_cli.so, which holds every command: loading pagmo, Ceres and their
+// libraries costs each start 12-14 ms of CPU, a third of an `analyze` of 1e4 samples
+// (docs/notes/performance.md, "Start-up", where it is weighed; docs/architecture.md).
 
 #include <fmt/format.h>
 

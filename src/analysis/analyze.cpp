@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <numeric>
 
-#include "pneumachaos/analysis/fft.hpp"
+#include "analysis/fft.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

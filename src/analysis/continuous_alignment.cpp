@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/continuous_alignment.hpp"
+#include "analysis/continuous_alignment.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "analysis/delay_embedding.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "kd_tree.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "pneumachaos/analysis/linear_region.hpp"
+#include "analysis/linear_region.hpp"
 
 namespace pneumachaos::detail {
 

@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "analysis/delay_embedding.hpp"
 #include "mutual_information.hpp"
 #include "pneumachaos/core/error.hpp"
 

@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/fft.hpp"
+#include "analysis/fft.hpp"
 
 #include <kissfft.hh>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/linear_region.hpp"
+#include "analysis/linear_region.hpp"
 
 #include <Eigen/Dense>
 

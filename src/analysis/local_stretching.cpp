@@ -1,11 +1,11 @@
-#include "pneumachaos/analysis/local_stretching.hpp"
+#include "analysis/local_stretching.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "analysis/delay_embedding.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -7,10 +7,10 @@
 #include <numeric>
 
 #include "divergence_uncertainty.hpp"
-#include "pneumachaos/analysis/continuous_alignment.hpp"
-#include "pneumachaos/analysis/linear_region.hpp"
+#include "analysis/continuous_alignment.hpp"
+#include "analysis/linear_region.hpp"
 #include "log_array.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -7,8 +7,8 @@
 #include <limits>
 #include <utility>
 
-#include "pneumachaos/analysis/continuous_alignment.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/continuous_alignment.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

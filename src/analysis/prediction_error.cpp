@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "pneumachaos/analysis/delay_embedding.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/delay_embedding.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

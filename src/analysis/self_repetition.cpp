@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -1,4 +1,4 @@
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 
 #include <cmath>
 #include <numeric>

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <vector>
 
-#include "pneumachaos/analysis/fft.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/fft.hpp"
+#include "analysis/series_statistics.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -10,7 +10,7 @@
 #include <numeric>
 #include <random>
 
-#include "pneumachaos/analysis/fft.hpp"
+#include "analysis/fft.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

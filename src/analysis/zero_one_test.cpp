@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "pneumachaos/analysis/fft.hpp"
+#include "analysis/fft.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

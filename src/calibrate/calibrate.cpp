@@ -15,7 +15,7 @@
 #include "claim_requirements.hpp"
 #include "evaluation_journal.hpp"
 #include "evaluator.hpp"
-#include "pneumachaos/calibrate/optimizer.hpp"
+#include "calibrate/optimizer.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 

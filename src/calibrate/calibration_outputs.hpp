@@ -7,7 +7,7 @@
 #include "condition_runs.hpp"
 #include "evaluation_journal.hpp"
 #include "pneumachaos/calibrate/calibrate.hpp"
-#include "pneumachaos/calibrate/optimizer.hpp"
+#include "calibrate/optimizer.hpp"
 
 namespace pneumachaos::detail {
 

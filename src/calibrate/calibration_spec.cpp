@@ -14,7 +14,7 @@
 #include "claim_requirements.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "pneumachaos/report/example_run.hpp"
+#include "report/example_run.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "condition_runs.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/calibrate/measured_map.hpp"
+#include "calibrate/measured_map.hpp"
 
 namespace pneumachaos::detail {
 

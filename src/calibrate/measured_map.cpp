@@ -1,4 +1,4 @@
-#include "pneumachaos/calibrate/measured_map.hpp"
+#include "calibrate/measured_map.hpp"
 
 #include <fmt/format.h>
 
@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/csv_fields.hpp"
-#include "pneumachaos/io/csv_text.hpp"
+#include "io/csv_fields.hpp"
+#include "io/csv_text.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -1,4 +1,4 @@
-#include "pneumachaos/calibrate/optimizer.hpp"
+#include "calibrate/optimizer.hpp"
 
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/cmaes.hpp>

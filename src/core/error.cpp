@@ -7,4 +7,10 @@ Error::Error(std::string where, const std::string& message)
       where_(std::move(where)),
       message_(message) {}
 
+Error::Error(ErrorField field, const std::string& detail, const std::string& message)
+    : Error(std::string(field.label) + detail, message) {
+  field_ = field.id;
+  detail_ = detail;
+}
+
 }  // namespace pneumachaos

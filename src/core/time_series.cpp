@@ -65,14 +65,14 @@ TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
   const std::size_t n = series.size();
   const double first = series.start_s();
   const double last = n == 0 ? first : series.time_s(n - 1);
-  const auto check = [&](std::optional<double> t, const char* name) {
+  const auto check = [&](std::optional<double> t, ErrorField name) {
     if (!t) return;
     if (!std::isfinite(*t) || *t < first || *t > last)
       throw Error(name, fmt::format("{} s lies outside the record, which spans {:.6g} to {:.6g} s",
                                     *t, first, last));
   };
-  check(from_s, "from");
-  check(to_s, "to");
+  check(from_s, kWindowFromField);
+  check(to_s, kWindowToField);
   // A bound typed as a sample's time selects that sample, whatever its rounding.
   constexpr double kSlack = 1e-6;  // of a sample
   const double rate = series.rate_Hz();
@@ -83,7 +83,7 @@ TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
       to_s ? std::min(n, static_cast<std::size_t>(std::floor((*to_s - first) * rate + kSlack)) + 1)
            : n;
   if (end < begin + 2) {
-    throw Error(to_s ? "to" : "from",
+    throw Error(to_s ? kWindowToField : kWindowFromField,
                 fmt::format("the window {:.6g} to {:.6g} s holds {} sample(s); at least 2 are "
                             "needed",
                             from_s.value_or(first), to_s.value_or(last),

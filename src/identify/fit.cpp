@@ -325,28 +325,28 @@ std::vector<std::string> default_free_keys(const Scenario& /*start*/) {
 }
 
 void check_free_keys(const Scenario& start, const std::vector<std::string>& free_keys) {
-  if (free_keys.empty()) throw Error("free parameter", "no free parameter to fit");
+  if (free_keys.empty()) throw Error(kFreeKeysField, "no free parameter to fit");
   std::set<std::string> seen;
   const auto infos = scenario_key_infos();
   for (const std::string& key : free_keys) {
     const auto it = std::find_if(infos.begin(), infos.end(),
                                  [&](const KeyInfo& i) { return i.key == key; });
     if (it == infos.end()) {
-      throw Error("free parameter", fmt::format("unknown scenario key '{}' (see `pneumachaos scenario --keys`)", key));
+      throw Error(kFreeKeysField, fmt::format("unknown scenario key '{}' (see `pneumachaos scenario --keys`)", key));
     }
     if (!it->choices.empty()) {
-      throw Error("free parameter", fmt::format("'{}' is a word ({}), not a number that can be fitted",
+      throw Error(kFreeKeysField, fmt::format("'{}' is a word ({}), not a number that can be fitted",
                                         key, it->choices));
     }
-    if (!seen.insert(key).second) throw Error("free parameter", fmt::format("'{}' named twice", key));
+    if (!seen.insert(key).second) throw Error(kFreeKeysField, fmt::format("'{}' named twice", key));
     double value = 0;
     try {
       value = key_value(start, key);
     } catch (const std::exception&) {
-      throw Error("free parameter", fmt::format("'{}' has no numeric value to start from", key));
+      throw Error(kFreeKeysField, fmt::format("'{}' has no numeric value to start from", key));
     }
     if (!(value > 0) || !std::isfinite(value)) {
-      throw Error("free parameter", fmt::format(
+      throw Error(kFreeKeysField, fmt::format(
           "'{}' starts at {}: a fitted parameter must start from a positive value (it is "
           "fitted in log form); set a start with --set {}=...", key, value, key));
     }

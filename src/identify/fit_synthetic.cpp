@@ -1,4 +1,4 @@
-#include "pneumachaos/identify/fit_synthetic.hpp"
+#include "identify/fit_synthetic.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "../model/friction_laws.hpp"
+#include "model/friction_laws.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos::identify {

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/csv_fields.hpp"
-#include "pneumachaos/io/csv_text.hpp"
+#include "io/csv_fields.hpp"
+#include "io/csv_text.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -271,7 +271,7 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
   const double rate_Hz = timed ? rate_from_times(c.times, origin, options.time_jitter) : *options.rate_Hz;
   if (timed && options.rate_Hz && !same_rate(rate_Hz, *options.rate_Hz, options.time_jitter)) {
     const auto t = static_cast<std::size_t>(layout.time);
-    throw Error("sampling rate",
+    throw Error(CsvSeriesOptions::kRateField,
                 fmt::format("{} Hz disagrees with the time column \"{}\" of {}, sampled at {:.6g} "
                             "Hz: drop the rate option to use the time column, or correct one of them",
                             *options.rate_Hz, layout.names[t], origin, rate_Hz));
@@ -286,7 +286,7 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
 void CsvSeriesOptions::validate() const {
   if (column.empty()) throw Error("column", "expected a column's name or number");
   if (rate_Hz && !(std::isfinite(*rate_Hz) && *rate_Hz > 0.0))
-    throw Error("sampling rate", fmt::format("must be a positive number of Hz, got {}", *rate_Hz));
+    throw Error(kRateField, fmt::format("must be a positive number of Hz, got {}", *rate_Hz));
   if (!(time_jitter >= 0.0 && time_jitter < 1.0))
     throw Error("time_jitter", fmt::format("{}: must be >= 0 and < 1", time_jitter));
 }

@@ -113,12 +113,15 @@ void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignm
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0) {
-      throw Error("override " + a, "expected key=value, e.g. friction.Fs_N=30");
+      throw Error(kOverrideField, " " + a, "expected key=value, e.g. friction.Fs_N=30");
     }
     const std::string key = a.substr(0, eq);
-    const std::string where = "override";
-    apply_setting(scenario, key, parse_setting_text(key, a.substr(eq + 1), where), where);
-    if (origins != nullptr) (*origins)[key] = where;
+    try {
+      apply_setting(scenario, key, parse_setting_text(key, a.substr(eq + 1), ""), "");
+    } catch (const Error& e) {
+      throw Error(kOverrideField, ": " + e.where(), e.message());  // e.where() is the key
+    }
+    if (origins != nullptr) (*origins)[key] = kOverrideField.label;
   }
 }
 
@@ -128,6 +131,10 @@ void validate_scenario(const Scenario& scenario, const SettingOrigins& origins) 
   } catch (const Error& e) {
     const auto it = origins.find(e.where());
     if (it == origins.end()) throw;
+    // Overrides are recorded under the field's label (apply_overrides).
+    if (it->second == kOverrideField.label) {
+      throw Error(kOverrideField, ": " + e.where(), e.message());
+    }
     throw Error(it->second + ": " + e.where(), e.message());
   }
 }

@@ -1,4 +1,4 @@
-#include "pneumachaos/model/variation.hpp"
+#include "model/variation.hpp"
 
 #include <boost/random/normal_distribution.hpp>
 #include <boost/random/uniform_real_distribution.hpp>

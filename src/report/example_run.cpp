@@ -1,4 +1,4 @@
-#include "pneumachaos/report/example_run.hpp"
+#include "report/example_run.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "pneumachaos/report/figures.hpp"
+#include "report/figures.hpp"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pneumachaos/analysis/local_stretching.hpp"
+#include "analysis/local_stretching.hpp"
 #include "pneumachaos/analysis/poincare.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
 

@@ -287,7 +287,8 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const I
 }  // namespace
 
 void IntegratorOptions::validate() const {
-  const auto positive = [](double v, const char* name) {
+  // `name`: a field (the tolerances, which the lyapunov command scales by a flag) or a name.
+  const auto positive = [](double v, const auto& name) {
     if (!(std::isfinite(v) && v > 0.0)) {
       throw Error(name, fmt::format("must be a positive finite number, got {}", v));
     }
@@ -296,8 +297,8 @@ void IntegratorOptions::validate() const {
     throw Error("t_end_s",
                 fmt::format("must be finite and after t_start_s = {}, got {}", t_start_s, t_end_s));
   }
-  positive(relative_tolerance, "relative_tolerance");
-  positive(absolute_tolerance, "absolute_tolerance");
+  positive(relative_tolerance, kRelativeToleranceField);
+  positive(absolute_tolerance, kAbsoluteToleranceField);
   positive(max_step_s, "max_step_s");
   positive(initial_step_s, "initial_step_s");
   if (!(std::isfinite(sample_rate_Hz) && sample_rate_Hz >= 0.0)) {

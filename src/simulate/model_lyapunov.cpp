@@ -179,18 +179,18 @@ class TwoTrajectories {
 }  // namespace
 
 void ModelLyapunovOptions::validate() const {
-  const auto positive = [](double v, const char* name) {
-    if (!(std::isfinite(v) && v > 0.0)) throw Error(name, "must be a positive number");
+  const auto positive = [](double v, ErrorField field) {
+    if (!(std::isfinite(v) && v > 0.0)) throw Error(field, "must be a positive number");
   };
-  positive(measure_s, "lyapunov.measure_s");
-  positive(renormalize_s, "lyapunov.renormalize_s");
-  positive(separation, "lyapunov.separation");
+  positive(measure_s, kMeasureField);
+  positive(renormalize_s, kRenormalizeField);
+  positive(separation, kSeparationField);
   if (!(std::isfinite(transient_s) && transient_s >= 0.0))
-    throw Error("lyapunov.transient_s", "must be a number >= 0");
-  if (blocks < 2) throw Error("lyapunov.blocks", "must be at least 2");
+    throw Error(kTransientField, "must be a number >= 0");
+  if (blocks < 2) throw Error(kBlocksField, "must be at least 2");
   // The uncertainty is the spread between blocks: each block needs a renormalisation.
   if (measure_s < renormalize_s * static_cast<double>(blocks)) {
-    throw Error("lyapunov.measure_s",
+    throw Error(kMeasureField,
                 fmt::format("{} s holds fewer than {} renormalisation intervals of {} s; the "
                             "exponent and its uncertainty need at least that many",
                             measure_s, blocks, renormalize_s));
@@ -198,7 +198,7 @@ void ModelLyapunovOptions::validate() const {
   // Every interval is a restart of two integrations and a stored running value: bound it.
   constexpr double kMaxIntervals = 1e7;
   if ((transient_s + measure_s) / renormalize_s > kMaxIntervals) {
-    throw Error("lyapunov.renormalize_s",
+    throw Error(kRenormalizeField,
                 fmt::format("{} s over {} s is more than {:g} renormalisations; use a longer "
                             "interval (the default 0.02 s is far shorter than the motion)",
                             renormalize_s, transient_s + measure_s, kMaxIntervals));
@@ -251,14 +251,14 @@ ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, Mod
   // were divergence (kPlantSeparationPerTolerance).
   const double min_separation = kPlantSeparationPerTolerance * o.relative_tolerance;
   if (!(o.separation <= kPlantMaxSeparation)) {
-    throw Error("lyapunov.separation",
+    throw Error(ModelLyapunovOptions::kSeparationField,
                 fmt::format("{:g} is not small against the motion: at most {:g} (10 kPa on P1); "
                             "the default is {:g}",
                             o.separation, kPlantMaxSeparation, ModelLyapunovOptions{}.separation));
   }
   // A separation that rounds to just below the floor is at the floor.
   if (o.separation < min_separation * (1.0 - 1e-9)) {
-    throw Error("lyapunov.separation",
+    throw Error(ModelLyapunovOptions::kSeparationField,
                 fmt::format("{:g} is within {:g} x the integration's relative tolerance ({:g}): "
                             "the integration error would be measured as divergence; use at least "
                             "{:g}, or tighten the tolerances with --tolerance-factor",

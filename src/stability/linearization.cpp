@@ -1,4 +1,4 @@
-#include "pneumachaos/stability/linearization.hpp"
+#include "stability/linearization.hpp"
 
 #include "reduced_coordinates.hpp"
 

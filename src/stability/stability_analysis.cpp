@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "pneumachaos/stability/linearization.hpp"
+#include "stability/linearization.hpp"
 
 namespace pneumachaos {
 

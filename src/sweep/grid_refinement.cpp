@@ -1,4 +1,4 @@
-#include "pneumachaos/sweep/grid_refinement.hpp"
+#include "sweep/grid_refinement.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "pneumachaos/sweep/map_agreement.hpp"
+#include "sweep/map_agreement.hpp"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
 #include <cmath>
 
 #include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/analysis/series_statistics.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
-#include "pneumachaos/model/variation.hpp"
+#include "model/variation.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep.hpp"

@@ -42,21 +42,21 @@ void ModelExponentSpec::validate(double duration_s) const {
   if (!enabled) return;
   if (!(std::isfinite(transient_s) && transient_s >= 0.0 && transient_s < duration_s)) {
     throw Error(
-        "model exponent transient",
+        kTransientField,
         fmt::format("{} s: must be >= 0 and shorter than the run ({} s)", transient_s, duration_s));
   }
   if (!(std::isfinite(measure_s) && measure_s >= 0.0)) {
-    throw Error("model exponent measure",
+    throw Error(kMeasureField,
                 fmt::format("{} s: must be a number >= 0 (0: the rest of the run)", measure_s));
   }
   if (!(std::isfinite(renormalize_s) && renormalize_s > 0.0)) {
-    throw Error("model exponent renormalize",
+    throw Error(kRenormalizeField,
                 fmt::format("{} s: must be a positive number", renormalize_s));
   }
   const ModelLyapunovOptions o = options(duration_s);
   // The uncertainty is the spread between blocks: each needs at least one renormalisation.
   if (o.measure_s < o.renormalize_s * static_cast<double>(o.blocks)) {
-    throw Error(measure_s > 0.0 ? "model exponent measure" : "model exponent transient",
+    throw Error(measure_s > 0.0 ? kMeasureField : kTransientField,
                 fmt::format("{} s of measurement hold fewer than {} renormalisations of {} s",
                             o.measure_s, o.blocks, o.renormalize_s));
   }
@@ -65,19 +65,19 @@ void ModelExponentSpec::validate(double duration_s) const {
 
 void SweepSpec::validate() const {
   validate_grid(axes);
-  if (repeats == 0) throw Error("repeats", "must be at least 1");
+  if (repeats == 0) throw Error(kRepeatsField, "must be at least 1");
   if (runs() > 10'000'000)
-    throw Error("grid", fmt::format("{} runs is more than 10 million", runs()));
+    throw Error(kGridField, fmt::format("{} runs is more than 10 million", runs()));
   base.validate();
   check_surrogate_count(surrogates, "surrogates");  // up front, not as every run's failure
   model_exponent.validate(base.run.duration_s);
   if (!adaptive.enabled) return;
   if (axes.size() != 2) {
     throw Error(
-        "adaptive",
+        AdaptiveSpec::kEnabledField,
         fmt::format("refines a map over exactly two grid axes; this sweep has {}", axes.size()));
   }
-  if (adaptive.coarse_step == 0) throw Error("adaptive step", "must be at least 1");
+  if (adaptive.coarse_step == 0) throw Error(AdaptiveSpec::kCoarseStepField, "must be at least 1");
 }
 
 std::string SweepSpec::fingerprint() const {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
+
 namespace pneumachaos {
 
 /// One named channel of a TimeSeries, e.g. name "v", unit "m/s".
@@ -49,10 +51,13 @@ class TimeSeries {
   std::vector<Channel> channels_;
 };
 
+inline constexpr ErrorField kWindowFromField{"window.from_s", "from"};
+inline constexpr ErrorField kWindowToField{"window.to_s", "to"};
+
 /// The samples with from_s <= t <= to_s (times on the series' own clock, start_s included),
-/// e.g. to skip a start-up transient; unset bounds are the series' ends. Throws Error
-/// naming "from" or "to" for a bound that is not finite, lies outside the record, or leaves
-/// fewer than 2 samples.
+/// e.g. to skip a start-up transient; unset bounds are the series' ends. Throws Error about
+/// kWindowFromField or kWindowToField for a bound that is not finite, lies outside the
+/// record, or leaves fewer than 2 samples.
 TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
                        std::optional<double> to_s);
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/measured_record.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
@@ -102,8 +103,11 @@ struct FitResult {
 /// The keys fitted when none are named: S1, S2 and the seal's Fc and Fs.
 std::vector<std::string> default_free_keys(const Scenario& start);
 
-/// Throws Error naming a key that is unknown, not a number, or cannot be fitted (a number
-/// whose value is zero or which is not a positive physical quantity), or repeated.
+inline constexpr ErrorField kFreeKeysField{"fit.free_keys", "free parameter"};
+
+/// Throws Error about kFreeKeysField naming a key that is unknown, not a number, or cannot be
+/// fitted (a number whose value is zero or which is not a positive physical quantity), or
+/// repeated.
 void check_free_keys(const Scenario& start, const std::vector<std::string>& free_keys);
 
 /// Fits the free keys. Throws Error for bad input (record, keys, a start scenario the plant

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
 
 namespace pneumachaos {
@@ -20,6 +21,7 @@ struct CsvSeriesOptions {
   /// Largest allowed deviation of a time step from the median step, relative to it; A/D
   /// timestamps jitter a little, a missing sample (a step of 2) is refused.
   double time_jitter = 0.01;
+  static constexpr ErrorField kRateField{"csv.rate_Hz", "sampling rate"};
   /// Throws Error naming the field that is out of range.
   void validate() const;
 };

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
 namespace pneumachaos {
@@ -14,9 +15,13 @@ struct GridAxis {
   std::vector<double> values;  ///< in the key's unit, ascending
 };
 
+/// The grid as a whole (no axis, too many runs) and one axis's text, in errors.
+inline constexpr ErrorField kGridField{"grid", "grid"};
+inline constexpr ErrorField kGridAxisField{"grid.axis", "grid axis"};
+
 /// Parses KEY=FROM:TO:STEP; TO is included when it lies on the grid (to a millionth of a
-/// step). Throws Error naming the text for an unknown or non-numeric key, FROM > TO,
-/// STEP <= 0, or more than 100000 values.
+/// step). Throws Error about kGridAxisField, naming the text, for an unknown or non-numeric
+/// key, FROM > TO, STEP <= 0, or more than 100000 values.
 GridAxis parse_grid_axis(const std::string& text);
 
 /// The paper's grid (§4.1): S1 2.45..3.70 by 0.05 mm^2 (26 values) and S2 0.05..4.40 by

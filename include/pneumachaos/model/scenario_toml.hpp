@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
 namespace pneumachaos {
@@ -24,7 +25,11 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
 /// Reads a scenario file on top of the built-in defaults.
 Scenario load_scenario_file(const std::string& path, SettingOrigins* origins = nullptr);
 
-/// Applies "key=value" overrides (from --set) in order.
+/// An override's text or key, in errors: "override friction.Fs_N" for a malformed
+/// assignment, "override: friction.Fs_N" for a bad value (detail() is the rest).
+inline constexpr ErrorField kOverrideField{"scenario.override", "override"};
+
+/// Applies "key=value" overrides (from --set) in order; errors are about kOverrideField.
 void apply_overrides(Scenario& scenario, const std::vector<std::string>& assignments,
                      SettingOrigins* origins = nullptr);
 

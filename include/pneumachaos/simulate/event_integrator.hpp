@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/hybrid_system.hpp"
 
 namespace pneumachaos {
@@ -35,6 +36,10 @@ struct IntegratorOptions {
   std::size_t max_events_at_one_instant = 64;
   std::size_t max_steps = 20'000'000;
   bool record_events = true;  ///< keep the time and kind of each event in the summary
+  static constexpr ErrorField kRelativeToleranceField{"integrator.relative_tolerance",
+                                                      "relative_tolerance"};
+  static constexpr ErrorField kAbsoluteToleranceField{"integrator.absolute_tolerance",
+                                                      "absolute_tolerance"};
 
   /// Throws Error naming the offending option.
   void validate() const;

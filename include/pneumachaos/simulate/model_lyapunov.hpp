@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/hybrid_system.hpp"
 #include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/simulate/event_integrator.hpp"
@@ -38,6 +39,13 @@ struct ModelLyapunovOptions {
   /// On by default: the default scenario's stroke ends at 7.5 s, before 5 s of transient and
   /// 40 s of measurement would (issue 33); false makes a stroke end fail the measurement.
   bool until_terminal_event = true;
+  static constexpr ErrorField kTransientField{"lyapunov.transient_s", "lyapunov.transient_s"};
+  static constexpr ErrorField kMeasureField{"lyapunov.measure_s", "lyapunov.measure_s"};
+  static constexpr ErrorField kRenormalizeField{"lyapunov.renormalize_s",
+                                                "lyapunov.renormalize_s"};
+  static constexpr ErrorField kSeparationField{"lyapunov.separation", "lyapunov.separation"};
+  static constexpr ErrorField kBlocksField{"lyapunov.blocks", "lyapunov.blocks"};
+  /// Throws Error about one of the fields above.
   void validate() const;
 };
 

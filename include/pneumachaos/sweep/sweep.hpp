@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/parameter_grid.hpp"
 #include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
@@ -22,7 +23,13 @@ struct ModelExponentSpec {
   double transient_s = 1.0;  ///< discarded first (the start-up from rest)
   double measure_s = 0.0;    ///< at most this long; 0: the rest of the run
   double renormalize_s = 0.02;
-  /// Checks the settings against a run of `duration_s`, naming the sweep's flags.
+  static constexpr ErrorField kTransientField{"sweep.model_exponent.transient_s",
+                                              "model exponent transient"};
+  static constexpr ErrorField kMeasureField{"sweep.model_exponent.measure_s",
+                                            "model exponent measure"};
+  static constexpr ErrorField kRenormalizeField{"sweep.model_exponent.renormalize_s",
+                                                "model exponent renormalize"};
+  /// Checks the settings against a run of `duration_s`, naming the fields above.
   void validate(double duration_s) const;
   /// The options of plant_lyapunov for a run of `duration_s`.
   [[nodiscard]] ModelLyapunovOptions options(double duration_s) const;
@@ -38,6 +45,8 @@ struct AdaptiveSpec {
   /// needed where a point's regime is read, not only its stick-slip and chaos classes (the
   /// report's sign rule); about twice the runs on the paper's maps.
   bool follow_motion = false;
+  static constexpr ErrorField kEnabledField{"sweep.adaptive", "adaptive"};
+  static constexpr ErrorField kCoarseStepField{"sweep.adaptive.coarse_step", "adaptive step"};
 };
 
 struct SweepSpec {
@@ -52,6 +61,8 @@ struct SweepSpec {
   std::size_t surrogates = 0;
   ModelExponentSpec model_exponent;  ///< two more trajectories per run at tight tolerances
   AdaptiveSpec adaptive;  ///< needs exactly two axes; part of the fingerprint when enabled
+  static constexpr ErrorField kRepeatsField{"sweep.repeats", "repeats"};
+  /// Throws Error naming the field (the fields above, kGridField, ModelExponentSpec's).
   void validate() const;
   /// What a user should know before the runs start, one sentence each: repeats that are
   /// identical copies (no run-to-run variation set or gridded), so every incidence is 0 or 1.

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "pneumachaos/analysis/delay_embedding.hpp"
+#include "analysis/delay_embedding.hpp"
 
 namespace pneumachaos {
 
