@@ -3,7 +3,7 @@
 
 #include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/sweep/grid_refinement.hpp"
+#include "grid_refinement.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {

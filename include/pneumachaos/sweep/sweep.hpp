@@ -142,9 +142,9 @@ struct PointSummary {
   /// Adaptive maps: not evaluated (runs 0, NaN means) but filled from the evaluated point of
   /// its cell named by GridRefinement::sources(): its incidences, hence its classes.
   bool inferred = false;
-  /// On the coarse lattice of `SweepSpec::adaptive.coarse_step` (coarse_lattice(); every
-  /// point of a sweep over another number of axes): run by the full grid and by every
-  /// adaptive map alike. What a map's refinement does not follow — a point's motion — is
+  /// On the coarse lattice: every `SweepSpec::adaptive.coarse_step`-th value of each of two
+  /// axes and its last (every point of a sweep over another number of axes), run by the full
+  /// grid and by every adaptive map alike. What a map's refinement does not follow — a point's motion — is
   /// counted on these points (the report's sign rule and damping rows).
   bool on_lattice = true;
 };
