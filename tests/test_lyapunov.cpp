@@ -180,6 +180,18 @@ TEST(Wolf, FlowsAcrossEightRecords) {
   }
 }
 
+// Chains start staggered over the first orbit; an orbit longer than the record put the later
+// chains' first query past its end (found by fuzz_analyze_series). They measure nothing.
+TEST(Wolf, AnOrbitLongerThanTheRecordLeavesChainsNothingToFollow) {
+  const auto x = sine(400, 3.0, 1000.0);
+  WolfOptions o = wolf_automatic(x);
+  o.typical_period = 5000;
+  o.evolve = 1;
+  WolfResult r;
+  ASSERT_NO_THROW(r = wolf_exponent(x, 1000.0, o));
+  EXPECT_TRUE(std::isfinite(r.lambda_per_s));
+}
+
 TEST(Wolf, StrictlyPeriodicRecordMeasuresNoStretching) {
   const auto x = sine(10000, 10.0, 1000.0);
   const WolfResult r = wolf_exponent(x, 1000.0, wolf_automatic(x));

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "kd_tree.hpp"
@@ -274,7 +275,9 @@ struct NeighbourIndex::Impl {
         tree(tree_points(e, groups), e.dimension()),
         query(e.dimension()),
         min_d2(resolution * resolution) {}
+  // A query outside the embedding is a caller's bug: refused rather than read past the record.
   const double* point(std::size_t i) {
+    if (i >= embedding->size()) throw std::out_of_range("NeighbourIndex: query past the embedding");
     for (std::size_t d = 0; d < embedding->dimension(); ++d) query[d] = embedding->coordinate(i, d);
     return query.data();
   }

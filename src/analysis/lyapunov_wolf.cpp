@@ -218,6 +218,9 @@ class Chain {
         fid_(g.margin() + (c * std::max<std::size_t>(g.period(), 1)) / chains) {}
 
   void follow() {
+    // A chain staggered past the record's end (an orbit as long as the record) has nothing
+    // to follow.
+    if (fid_ + g_.evolve() >= g_.usable()) return;
     measured_ = Pair{g_.choose(fid_, nullptr, g_.candidate_scale(), d_prev_), 0};
     while (fid_ + g_.evolve() < g_.usable()) step();
   }
