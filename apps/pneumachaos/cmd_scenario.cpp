@@ -7,6 +7,19 @@
 #include "pneumachaos/model/scenario_toml.hpp"
 
 namespace pneumachaos::cli {
+namespace {
+
+// A Markdown table cell: "|" (in |v|, between a word key's choices) would end the cell.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
 
 Action add_scenario(CLI::App& app) {
   struct Args {
@@ -24,7 +37,7 @@ Action add_scenario(CLI::App& app) {
       const Scenario d = default_scenario();
       for (const auto& k : scenario_key_infos()) {
         fmt::print("| `{}` | {} | {} | {} | {} |\n", k.key, k.unit, setting_text(d, k.key),
-                   k.description, k.choices.empty() ? k.range : k.choices);
+                   cell(k.description), cell(k.choices.empty() ? k.range : k.choices));
       }
       return kExitOk;
     }
