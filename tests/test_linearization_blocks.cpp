@@ -101,5 +101,32 @@ TEST(LinearizationBlocks, StrongHeatTransferApproachesIsothermalChambers) {
     EXPECT_LT(nearest(energy.eigenvalues, z), 1e-2) << z;
 }
 
+// The two-state memory with slip lengths far below the motion's: its states follow the
+// Stribeck weight almost at once, so the memoryless seal's modes return, and each state adds
+// a fast decaying mode of its own, near -v / L_i (the slip law's rate at the steady speed).
+TEST(LinearizationBlocks, ShortSlipLengthsApproachTheMemorylessSeal) {
+  const Linearized plain = linearize(with({}));
+  const Linearized memory =
+      linearize(with({"friction.memory=rate_state", "friction.rate_state_slip_length_um=0.01",
+                      "friction.rate_state_slip_length2_um=0.02"}));
+  ASSERT_EQ(memory.eigenvalues.size(), plain.eigenvalues.size() + 2);
+  EXPECT_LT(memory.rates.cwiseAbs().maxCoeff(), 1e-3);  // the states steady too
+  for (const auto& z : plain.eigenvalues) EXPECT_LT(nearest(memory.eigenvalues, z), 1e-2) << z;
+  EXPECT_EQ(memory.state.names.back(), "theta2");  // named as the output channel
+  EXPECT_LT(memory.eigenvalues.front().real(), 100.0 * plain.eigenvalues.front().real());
+}
+
+// Long slip lengths keep the states slow: the drop's negative slope no longer acts at once,
+// and the modes move (the block is not ignored).
+TEST(LinearizationBlocks, LongSlipLengthsMoveTheModes) {
+  const Linearized plain = linearize(with({}));
+  const Linearized memory =
+      linearize(with({"friction.memory=rate_state", "friction.rate_state_slip_length_um=2000",
+                      "friction.rate_state_slip_length2_um=5000"}));
+  double moved = 0.0;
+  for (const auto& z : plain.eigenvalues) moved = std::max(moved, nearest(memory.eigenvalues, z));
+  EXPECT_GT(moved, 1e-2);
+}
+
 }  // namespace
 }  // namespace pneumachaos

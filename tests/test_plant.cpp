@@ -337,6 +337,26 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {
   expect_jacobian_matches_differences(rig, quasi, y);
 }
 
+// The two-state memory (memory = rate_state) on the simple rig: both states off their steady
+// values, with a direct effect and pressure gains.
+TEST(Plant, ExactJacobianMatchesDifferencesWithTheTwoStateMemory) {
+  Scenario s = simple_rig_scenario();
+  s.friction.memory = FrictionMemory::kRateState;
+  s.friction.rate_state.direct_N = 2.0;
+  s.friction.pressure_gain = {.coulomb_N_per_Pa = 8e-6, .static_N_per_Pa = 12e-6};
+  const Plant plant(s);
+  std::vector<double> x = plant.initial_state();
+  const StateLayout& L = plant.layout();
+  ASSERT_EQ(L.seal_z_count, 2u);
+  x[L.x] = 0.2;
+  x[L.v] = 0.012;
+  x[L.P1] = 3.0e5;
+  x[L.P2] = 2.0e5;
+  x[L.seal_z] = 0.6;
+  x[L.seal_z + 1] = 0.8;
+  expect_jacobian_matches_differences(plant, plant.sliding_mode(+1), x);
+}
+
 TEST(Plant, ExactJacobianMatchesDifferencesWithAGmsSeal) {
   // Generalized Maxwell-slip seal: elements below, on the way to and past their slip
   // deflections (about 0.1, 0.2, 0.3, 0.4 mm at this speed), away from the weight's kinks.

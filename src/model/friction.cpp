@@ -31,6 +31,8 @@ std::unique_ptr<FrictionModel> make_friction_model(
     case FrictionKind::kClassic:
     case FrictionKind::kStribeck:
       if (params.lagged()) return std::make_unique<StribeckLagFriction>(params, std::move(t));
+      if (params.rate_and_state())
+        return std::make_unique<StribeckRateStateFriction>(params, std::move(t));
       return std::make_unique<StictionFriction>(params, std::move(t));
     case FrictionKind::kLuGre:
       return std::make_unique<LuGreFriction>(params, std::move(t));

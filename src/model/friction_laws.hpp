@@ -163,15 +163,38 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.curve.viscous_Ns_per_m * speed);
 }
 
+/// The two-state memory (docs/model.md, "Friction"), after the two-state law of Gu, Rice,
+/// Ruina & Tse (1984) with the Stribeck weight as the states' steady value: writes
+/// d theta_i/dt = -(|v| / L_i)(theta_i - w(v)) (Ruina's slip law: the states move with the
+/// slip, not with time); F = [Fc + (Fs - Fc)(share theta_1 + (1 - share) theta_2)
+/// + A ln(1 + |v|/v_A)] sgn v + B v while sliding in `direction`.
+template <typename T, typename P>
+T stribeck_rate_state_N(const P& p, const BasicFrictionInput<T>& in, int direction,
+                        const T* theta, T* dtheta) {
+  using std::log;
+  const double d = direction;
+  T speed = d * in.v_m_per_s;
+  if (speed < 0.0) speed = T(0.0);
+  const RateStateMemory& m = p.rate_state;
+  const T w = stribeck_weight(p, speed);
+  dtheta[0] = -speed / m.slip_length_m * (theta[0] - w);
+  dtheta[1] = -speed / m.slip_length2_m * (theta[1] - w);
+  const T weight = m.share * theta[0] + (1.0 - m.share) * theta[1];
+  const T direct = m.direct_N * log(1.0 + speed / m.direct_velocity_m_per_s);
+  const Levels<T> f = levels_N(p, in);
+  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * weight + direct +
+              p.curve.viscous_Ns_per_m * speed);
+}
+
 }  // namespace pneumachaos::friction_law
 
 #include "friction_gms_law.hpp"
 
 namespace pneumachaos::friction_law {
 
-/// Rates of the internal states while the contact rests: LuGre's bristles and the GMS
-/// elements hold still; the
-/// lagged Stribeck weight recovers towards its value at v = 0, which is 1.
+/// Rates of the internal states while the contact rests: LuGre's bristles, the GMS elements
+/// and the two-state memory (whose states move with the slip) hold still; the lagged
+/// Stribeck weight recovers towards its value at v = 0, which is 1.
 template <typename T, typename P>
 void resting_rates(const P& p, const T* z, T* dz, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) dz[i] = T(0.0);
@@ -195,6 +218,7 @@ T moving_force_N(const P& p, const BasicFrictionInput<T>& in, int direction, con
   if (p.kind == FrictionKind::kLuGre) return lugre_N(p, in, z[0], dz[0], direction);
   if (p.kind == FrictionKind::kGms) return gms_N(p, in, z, dz, direction);
   if (p.lagged()) return stribeck_lag_N(p, in, direction, z[0], dz[0]);
+  if (p.rate_and_state()) return stribeck_rate_state_N(p, in, direction, z, dz);
   return stiction_sliding_N(p, in, direction);
 }
 

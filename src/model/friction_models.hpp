@@ -54,6 +54,28 @@ class StribeckLagFriction final : public FrictionModel {
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 
+/// The stribeck model with memory = rate_state: true stiction as StictionFriction, with
+/// breakaway at the level the two states hold, Fc + (Fs - Fc)(share theta_1 + (1 - share)
+/// theta_2); while sliding, friction_law::stribeck_rate_state_N (Gu, Rice, Ruina & Tse 1984;
+/// docs/model.md). The states move with the slip only, so they hold still while stuck; a run
+/// starts from a long rest, theta_i = 1.
+class StribeckRateStateFriction final : public FrictionModel {
+ public:
+  using FrictionModel::FrictionModel;
+  [[nodiscard]] std::size_t state_count() const override { return 2; }
+  [[nodiscard]] const char* state_name() const override { return "theta"; }
+  [[nodiscard]] const char* state_unit() const override { return "-"; }
+  [[nodiscard]] double state_scale() const override { return 1e-2; }
+  void rest_state(std::span<double> z) const override;
+  [[nodiscard]] bool has_stiction() const override { return true; }
+  double force_N(const FrictionInput& in, int direction, std::span<const double> z,
+                 std::span<double> dz) const override;
+  [[nodiscard]] double holding_force_N(const FrictionInput& in,
+                                       std::span<const double> z) const override;
+  [[nodiscard]] double steady_force_N(const FrictionInput& in) const override;
+  void steady_state(const FrictionInput& in, std::span<double> z) const override;
+};
+
 /// Generalized Maxwell-slip (Al-Bender, Lampaert & Swevers 2005) in the smooth state-equation
 /// form of docs/model.md: N elements with deflections z_i, F = sum k_i z_i + B v.
 class GmsFriction final : public FrictionModel {

@@ -46,9 +46,9 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
                             "Fc = {} N ({}Fc_N)",
                             f.curve.static_N, f.curve.coulomb_N, prefix));
   }
-  if (f.memory == FrictionMemory::kLag && f.kind != FrictionKind::kStribeck) {
-    throw Error(prefix + "memory", fmt::format("the lag acts on the Stribeck drop: needs {}model "
-                                               "= \"stribeck\", not \"{}\"",
+  if (f.memory != FrictionMemory::kNone && f.kind != FrictionKind::kStribeck) {
+    throw Error(prefix + "memory", fmt::format("the memory acts on the Stribeck drop: needs "
+                                               "{}model = \"stribeck\", not \"{}\"",
                                                prefix, friction_kind_name(f.kind)));
   }
   if (f.kind == FrictionKind::kGms) check_gms(f, prefix);

@@ -123,6 +123,29 @@ void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref
       1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).gms.quasi_static_rate_per_s; }));
 }
 
+// The two-state memory's keys (memory = rate_state; docs/model.md, "Friction").
+template <typename Ref>
+void add_rate_state_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref) {
+  keys.push_back(number(
+      prefix + "rate_state_slip_length_um", "um",
+      "rate_state: slip length L1 over which the first state reaches the Stribeck weight", 1e-6,
+      kPositive, [ref](auto& s) -> auto& { return ref(s).rate_state.slip_length_m; }));
+  keys.push_back(number(
+      prefix + "rate_state_slip_length2_um", "um", "rate_state: the second state's slip length L2",
+      1e-6, kPositive, [ref](auto& s) -> auto& { return ref(s).rate_state.slip_length2_m; }));
+  keys.push_back(number(
+      prefix + "rate_state_share", "-", "rate_state: the first state's share of the Stribeck drop",
+      1.0, Range{0.0, 1.0}, [ref](auto& s) -> auto& { return ref(s).rate_state.share; }));
+  keys.push_back(number(
+      prefix + "rate_state_direct_N", "N",
+      "rate_state: direct effect A of A ln(1 + |v|/vA), the friction's instant rise with speed",
+      1.0, kNonNegative, [ref](auto& s) -> auto& { return ref(s).rate_state.direct_N; }));
+  keys.push_back(number(
+      prefix + "rate_state_direct_velocity_mm_per_s", "mm/s",
+      "rate_state: reference velocity vA of the direct effect", 1e-3, kPositive,
+      [ref](auto& s) -> auto& { return ref(s).rate_state.direct_velocity_m_per_s; }));
+}
+
 // The same friction keys serve the piston seal ("friction.") and the load guide
 // ("guide_friction."), so they are generated from one list.
 template <typename Ref>
@@ -154,8 +177,10 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
       kNonNegative, [ref](auto& s) -> auto& { return ref(s).lugre.sigma1_Ns_per_m; }));
   add_gms_keys(keys, prefix, ref);
   keys.push_back(word<FrictionMemory>(
-      prefix + "memory", "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms",
-      {"none", "lag"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
+      prefix + "memory",
+      "stribeck only: lag makes the Stribeck drop lag the velocity by lag_time_ms; rate_state "
+      "gives it two states that follow the slip (the rate_state_* keys)",
+      {"none", "lag", "rate_state"}, [ref](auto& s) -> auto& { return ref(s).memory; }));
   keys.push_back(number(
       prefix + "quasi_static_rate", "1/s",
       "lugre only: bristle relaxation rate sigma0 |v| / g above which the bristle is taken "
@@ -164,6 +189,7 @@ void add_friction_keys(std::vector<KeySpec>& keys, const std::string& prefix,
   keys.push_back(number(
       prefix + "lag_time_ms", "ms", "time constant of the Stribeck drop's lag (memory = lag)", 1e-3,
       kPositive, [ref](auto& s) -> auto& { return ref(s).lag.time_s; }));
+  add_rate_state_keys(keys, prefix, ref);
   keys.push_back(number(
       prefix + "Fc_gain_N_per_MPa", "N/MPa",
       "pressure dependence: Fc grows by this per MPa of P1+P2-2Pa", 1e-6,

@@ -1,17 +1,6 @@
 #include "reduced_coordinates.hpp"
 
-#include <fmt/format.h>
-
 namespace pneumachaos::reduced {
-namespace {
-
-// "z" for a single internal state (LuGre), "z1", "z2", ... for several (GMS elements); the
-// guide's the same with "_guide".
-std::string internal_state_name(const char* base, std::size_t i, std::size_t count) {
-  return count == 1 ? std::string(base) : fmt::format("{}{}", base, i + 1);
-}
-
-}  // namespace
 
 std::vector<Entry> entries(const StateLayout& L) {
   std::vector<Entry> r;
@@ -19,11 +8,7 @@ std::vector<Entry> entries(const StateLayout& L) {
     if (i == L.x) continue;
     if (i == L.load_x) {
       r.push_back({"deflection", i, true});
-    } else if (L.entries[i].block == StateBlock::kSealFriction) {
-      r.push_back({internal_state_name("z", i - L.seal_z, L.seal_z_count), i});
-    } else if (L.entries[i].block == StateBlock::kGuideFriction) {
-      r.push_back({internal_state_name("z_guide", i - L.guide_z, L.guide_z_count), i});
-    } else {
+    } else {  // by the layout's name, as the output channel (theta, z_gms2, z_guide, ...)
       r.push_back({L.entries[i].name, i});
     }
   }

@@ -12,8 +12,10 @@ namespace pneumachaos {
 enum class FrictionKind { kClassic, kStribeck, kLuGre, kGms };
 
 /// Frictional memory of the stribeck model: kLag makes the Stribeck drop follow the velocity
-/// with a first-order lag (Hess & Soom 1990; docs/model.md, "Friction").
-enum class FrictionMemory { kNone, kLag };
+/// with a first-order lag in time (Hess & Soom 1990); kRateState with two state variables
+/// that evolve with the slip, as the two-state friction law of Gu, Rice, Ruina & Tse (1984)
+/// (docs/model.md, "Friction").
+enum class FrictionMemory { kNone, kLag, kRateState };
 
 /// One sinusoidal component of a friction texture along the bore: the friction levels are
 /// multiplied by 1 + sum(amplitude * sin(wavenumber * x + phase)).
@@ -86,6 +88,19 @@ struct StribeckLag {
   double time_s = 0.005;  ///< time constant
 };
 
+/// Two state variables of the Stribeck drop that evolve with the slip (kind = kStribeck,
+/// memory = kRateState; docs/model.md, "Friction"): each relaxes to the steady weight
+/// exp(-(|v|/vs)^delta) over its own slip length, d theta_i/dt = -(|v| / L_i)(theta_i - w(v))
+/// (Ruina's slip law), and the force has a direct effect of the velocity,
+/// F = [Fc + (Fs - Fc)(share theta_1 + (1 - share) theta_2) + A ln(1 + |v|/v_A)] sgn v + B v.
+struct RateStateMemory {
+  double slip_length_m = 20e-6;    ///< L_1, the first state's slip length
+  double slip_length2_m = 200e-6;  ///< L_2, the second state's
+  double share = 0.5;              ///< the first state's share of the Stribeck drop, 0..1
+  double direct_N = 0.0;           ///< A, the direct effect's force scale
+  double direct_velocity_m_per_s = 1e-3;  ///< v_A, its reference velocity
+};
+
 /// A seal's friction: the model `kind` (with `memory` for stribeck) and each model's
 /// parameters, which are kept when the kind changes; a model reads the curve, the pressure
 /// gains and the texture, and its own struct.
@@ -99,6 +114,7 @@ struct FrictionParams {
   LuGreBristles lugre;
   GmsElements gms;
   StribeckLag lag;
+  RateStateMemory rate_state;
   /// The threshold of this model's quasi-static limit (0: none).
   [[nodiscard]] double quasi_static_threshold() const {
     if (kind == FrictionKind::kGms) return gms.quasi_static_rate_per_s;
@@ -113,6 +129,9 @@ struct FrictionParams {
   }
   [[nodiscard]] bool lagged() const {
     return kind == FrictionKind::kStribeck && memory == FrictionMemory::kLag;
+  }
+  [[nodiscard]] bool rate_and_state() const {
+    return kind == FrictionKind::kStribeck && memory == FrictionMemory::kRateState;
   }
 };
 
