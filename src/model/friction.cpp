@@ -24,6 +24,11 @@ void FrictionModel::steady_state(const FrictionInput& /*in*/, std::span<double> 
 
 void FrictionModel::rest_state(std::span<double> z) const { std::fill(z.begin(), z.end(), 0.0); }
 
+// A long rest has restored the whole Stribeck drop.
+void StribeckMemoryFriction::rest_state(std::span<double> z) const {
+  std::fill(z.begin(), z.end(), 1.0);
+}
+
 std::unique_ptr<FrictionModel> make_friction_model(
     const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table) {
   std::shared_ptr<const TextureTable>& t = texture_table;

@@ -3,8 +3,6 @@
 
 namespace pneumachaos {
 
-void StribeckLagFriction::rest_state(std::span<double> z) const { z[0] = 1.0; }
-
 double StribeckLagFriction::force_N(const FrictionInput& in, int direction,
                                     std::span<const double> z, std::span<double> dz) const {
   return friction_law::stribeck_lag_N(p_, in, direction, z[0], dz[0]);

@@ -34,18 +34,25 @@ class LuGreFriction final : public FrictionModel {
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 
-/// The stribeck model with memory = lag. True stiction as StictionFriction, but while sliding the Stribeck drop's weight s follows
-/// exp(-(|v|/vs)^delta) with a first-order lag: ds/dt = (exp(-(|v|/vs)^delta) - s) / tau,
-/// F = [Fc + (Fs - Fc) s] sgn v + B v (Hess & Soom 1990; docs/model.md). At rest s -> 1.
-class StribeckLagFriction final : public FrictionModel {
+/// What the stribeck model's memories share: true stiction as StictionFriction, and states
+/// that are weights of the Stribeck drop (0..1), all 1 after a long rest (the start of a run).
+class StribeckMemoryFriction : public FrictionModel {
  public:
   using FrictionModel::FrictionModel;
-  [[nodiscard]] std::size_t state_count() const override { return 1; }
-  [[nodiscard]] const char* state_name() const override { return "s_lag"; }
   [[nodiscard]] const char* state_unit() const override { return "-"; }
   [[nodiscard]] double state_scale() const override { return 1e-2; }
   void rest_state(std::span<double> z) const override;
   [[nodiscard]] bool has_stiction() const override { return true; }
+};
+
+/// The stribeck model with memory = lag: while sliding the Stribeck drop's weight s follows
+/// exp(-(|v|/vs)^delta) with a first-order lag: ds/dt = (exp(-(|v|/vs)^delta) - s) / tau,
+/// F = [Fc + (Fs - Fc) s] sgn v + B v (Hess & Soom 1990; docs/model.md). At rest s -> 1.
+class StribeckLagFriction final : public StribeckMemoryFriction {
+ public:
+  using StribeckMemoryFriction::StribeckMemoryFriction;
+  [[nodiscard]] std::size_t state_count() const override { return 1; }
+  [[nodiscard]] const char* state_name() const override { return "s_lag"; }
   double force_N(const FrictionInput& in, int direction, std::span<const double> z,
                  std::span<double> dz) const override;
   [[nodiscard]] double holding_force_N(const FrictionInput& in,
@@ -54,20 +61,15 @@ class StribeckLagFriction final : public FrictionModel {
   void steady_state(const FrictionInput& in, std::span<double> z) const override;
 };
 
-/// The stribeck model with memory = rate_state: true stiction as StictionFriction, with
-/// breakaway at the level the two states hold, Fc + (Fs - Fc)(share theta_1 + (1 - share)
-/// theta_2); while sliding, friction_law::stribeck_rate_state_N (Gu, Rice, Ruina & Tse 1984;
-/// docs/model.md). The states move with the slip only, so they hold still while stuck; a run
-/// starts from a long rest, theta_i = 1.
-class StribeckRateStateFriction final : public FrictionModel {
+/// The stribeck model with memory = rate_state: breakaway at the level the two states hold,
+/// Fc + (Fs - Fc)(share theta_1 + (1 - share) theta_2); while sliding,
+/// friction_law::stribeck_rate_state_N (Gu, Rice, Ruina & Tse 1984; docs/model.md). The
+/// states move with the slip only, so they hold still while stuck.
+class StribeckRateStateFriction final : public StribeckMemoryFriction {
  public:
-  using FrictionModel::FrictionModel;
+  using StribeckMemoryFriction::StribeckMemoryFriction;
   [[nodiscard]] std::size_t state_count() const override { return 2; }
   [[nodiscard]] const char* state_name() const override { return "theta"; }
-  [[nodiscard]] const char* state_unit() const override { return "-"; }
-  [[nodiscard]] double state_scale() const override { return 1e-2; }
-  void rest_state(std::span<double> z) const override;
-  [[nodiscard]] bool has_stiction() const override { return true; }
   double force_N(const FrictionInput& in, int direction, std::span<const double> z,
                  std::span<double> dz) const override;
   [[nodiscard]] double holding_force_N(const FrictionInput& in,

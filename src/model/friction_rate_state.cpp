@@ -5,11 +5,6 @@
 
 namespace pneumachaos {
 
-void StribeckRateStateFriction::rest_state(std::span<double> z) const {
-  z[0] = 1.0;
-  z[1] = 1.0;
-}
-
 double StribeckRateStateFriction::force_N(const FrictionInput& in, int direction,
                                           std::span<const double> z,
                                           std::span<double> dz) const {
