@@ -154,6 +154,20 @@ TEST(FrictionRateState, KeysAreRefusedOutOfRangeNamingTheKey) {
   }
 }
 
+// A scenario built in code, not through the keys, is checked by validate() too.
+TEST(FrictionRateState, ValidateRefusesASlipLengthOfZeroSetInCode) {
+  Scenario s = simple_rig_scenario();
+  s.friction.memory = FrictionMemory::kRateState;
+  s.validate();
+  s.friction.rate_state.slip_length2_m = 0.0;
+  try {
+    s.validate();
+    FAIL() << "accepted a slip length of zero";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where(), "friction.rate_state_slip_length2_um");
+  }
+}
+
 TEST(FrictionRateState, OnlyTheStribeckModelTakesTheMemory) {
   Scenario s = default_scenario();
   s.friction.kind = FrictionKind::kLuGre;

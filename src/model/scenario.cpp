@@ -39,6 +39,25 @@ void check_gms(const FrictionParams& f, const std::string& prefix) {
   }
 }
 
+// The memories' key ranges, again for scenarios built in code (a zero time constant or slip
+// length would divide by zero in the law).
+void check_memory(const FrictionParams& f, const std::string& prefix) {
+  const auto refuse = [&](const char* key, double value, const char* expected) {
+    throw Error(prefix + key, fmt::format("{} is out of range: expected {}", value, expected));
+  };
+  if (f.lagged() && !(f.lag.time_s > 0.0)) refuse("lag_time_ms", f.lag.time_s * 1e3, "> 0 ms");
+  if (!f.rate_and_state()) return;
+  const RateStateMemory& m = f.rate_state;
+  if (!(m.slip_length_m > 0.0))
+    refuse("rate_state_slip_length_um", m.slip_length_m * 1e6, "> 0 um");
+  if (!(m.slip_length2_m > 0.0))
+    refuse("rate_state_slip_length2_um", m.slip_length2_m * 1e6, "> 0 um");
+  if (!(m.share >= 0.0 && m.share <= 1.0)) refuse("rate_state_share", m.share, "0 to 1");
+  if (!(m.direct_N >= 0.0)) refuse("rate_state_direct_N", m.direct_N, ">= 0 N");
+  if (!(m.direct_velocity_m_per_s > 0.0))
+    refuse("rate_state_direct_velocity_mm_per_s", m.direct_velocity_m_per_s * 1e3, "> 0 mm/s");
+}
+
 void check_friction(const FrictionParams& f, const std::string& prefix) {
   if (f.curve.static_N < f.curve.coulomb_N) {
     throw Error(prefix + "Fs_N",
@@ -52,6 +71,7 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
                                                prefix, friction_kind_name(f.kind)));
   }
   if (f.kind == FrictionKind::kGms) check_gms(f, prefix);
+  check_memory(f, prefix);
   const PressureGains& gain = f.pressure_gain;
   if (f.kind != FrictionKind::kClassic && gain.static_N_per_Pa < gain.coulomb_N_per_Pa) {
     throw Error(prefix + "Fs_gain_N_per_MPa",
