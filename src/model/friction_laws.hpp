@@ -163,6 +163,19 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
   return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * s + p.curve.viscous_Ns_per_m * speed);
 }
 
+/// The two-state memory's weight of the Stribeck drop, share theta_1 + (1 - share) theta_2.
+template <typename T>
+T rate_state_weight(const RateStateMemory& m, const T* theta) {
+  return m.share * theta[0] + (1.0 - m.share) * theta[1];
+}
+
+/// Its direct effect A ln(1 + speed / v_A) (speed >= 0).
+template <typename T>
+T rate_state_direct_N(const RateStateMemory& m, const T& speed) {
+  using std::log;
+  return m.direct_N * log(1.0 + speed / m.direct_velocity_m_per_s);
+}
+
 /// The two-state memory (docs/model.md, "Friction"), after the two-state law of Gu, Rice,
 /// Ruina & Tse (1984) with the Stribeck weight as the states' steady value: writes
 /// d theta_i/dt = -(|v| / L_i)(theta_i - w(v)) (Ruina's slip law: the states move with the
@@ -171,7 +184,6 @@ T stribeck_lag_N(const P& p, const BasicFrictionInput<T>& in, int direction,
 template <typename T, typename P>
 T stribeck_rate_state_N(const P& p, const BasicFrictionInput<T>& in, int direction,
                         const T* theta, T* dtheta) {
-  using std::log;
   const double d = direction;
   T speed = d * in.v_m_per_s;
   if (speed < 0.0) speed = T(0.0);
@@ -179,10 +191,9 @@ T stribeck_rate_state_N(const P& p, const BasicFrictionInput<T>& in, int directi
   const T w = stribeck_weight(p, speed);
   dtheta[0] = -speed / m.slip_length_m * (theta[0] - w);
   dtheta[1] = -speed / m.slip_length2_m * (theta[1] - w);
-  const T weight = m.share * theta[0] + (1.0 - m.share) * theta[1];
-  const T direct = m.direct_N * log(1.0 + speed / m.direct_velocity_m_per_s);
   const Levels<T> f = levels_N(p, in);
-  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * weight + direct +
+  return d * (f.coulomb_N + (f.static_N - f.coulomb_N) * rate_state_weight(m, theta) +
+              rate_state_direct_N(m, speed) +
               p.curve.viscous_Ns_per_m * speed);
 }
 

@@ -16,8 +16,8 @@ double StribeckRateStateFriction::force_N(const FrictionInput& in, int direction
 double StribeckRateStateFriction::holding_force_N(const FrictionInput& in,
                                                   std::span<const double> z) const {
   const friction_law::Levels<double> f = friction_law::levels_N(p_, in);
-  const RateStateMemory& m = p_.rate_state;
-  return f.coulomb_N + (f.static_N - f.coulomb_N) * (m.share * z[0] + (1.0 - m.share) * z[1]);
+  return f.coulomb_N +
+         (f.static_N - f.coulomb_N) * friction_law::rate_state_weight(p_.rate_state, z.data());
 }
 
 // In steady sliding both states sit on the Stribeck weight: the stribeck curve plus the
@@ -25,8 +25,7 @@ double StribeckRateStateFriction::holding_force_N(const FrictionInput& in,
 double StribeckRateStateFriction::steady_force_N(const FrictionInput& in) const {
   const double v = in.v_m_per_s;
   const double sgn = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-  const RateStateMemory& m = p_.rate_state;
-  const double direct = m.direct_N * std::log1p(std::abs(v) / m.direct_velocity_m_per_s);
+  const double direct = friction_law::rate_state_direct_N(p_.rate_state, std::abs(v));
   return sgn * (friction_law::stribeck_level_N(p_, in, v) + direct) +
          p_.curve.viscous_Ns_per_m * v;
 }
