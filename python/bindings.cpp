@@ -268,7 +268,9 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("wolf", &AnalysisOptions::wolf)
       .def_readwrite("dimension", &AnalysisOptions::dimension)
       .def_readwrite("delay", &AnalysisOptions::delay)
-      .def_readwrite("theiler", &AnalysisOptions::theiler);
+      .def_readwrite("theiler", &AnalysisOptions::theiler)
+      .def_readwrite("seed", &AnalysisOptions::seed)
+      .def_readwrite("verdict_seeds", &AnalysisOptions::verdict_seeds);
   m.def("simulate", &simulate_py);
   m.def("analyze", &analyze_py);
   m.def("stability_json", [](const Scenario& s) {

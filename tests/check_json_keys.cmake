@@ -6,7 +6,8 @@ foreach(path "lyapunov;wolf;value" "lyapunov;wolf;unit" "lyapunov;divergence;val
              "verdict;chaotic" "verdict;stick_slip" "zero_one;run" "zero_one;K;value"
              "zero_one;K;unit" "zero_one;K_q25;value" "zero_one;K_q75;value" "zero_one;step;unit"
              "surrogate;run" "surrogate;count" "surrogate;rank" "surrogate;p_value;value"
-             "surrogate;null_rejected" "surrogate;statistic;value" "prediction;ratio;value")
+             "surrogate;null_rejected" "surrogate;statistic;value" "prediction;ratio;value"
+             "verdict;seed_agreement;seeds" "verdict;seed_agreement;share")
   string(JSON value ERROR_VARIABLE err GET "${json}" ${path})
   if(err)
     message(FATAL_ERROR "missing key ${path}: ${err}")

@@ -34,7 +34,7 @@ struct AnalyzeArgs {
   std::string json;
   std::string series_out;
   bool no_wolf = false;
-  std::optional<std::string> surrogates, seed, dimension, delay, theiler;
+  std::optional<std::string> surrogates, seed, verdict_seeds, dimension, delay, theiler;
 };
 
 // The command line's analysis settings, each checked and named by its flag.
@@ -45,6 +45,12 @@ AnalysisOptions analysis_options(const AnalyzeArgs& a) {
   if (a.seed) {
     const long long seed = integer_option("--seed", *a.seed, LLONG_MIN);
     options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer
+  }
+  options.verdict_seeds = option_or(a.verdict_seeds, "--verdict-seeds", 1, 5);
+  if (options.verdict_seeds % 2 == 0 || options.verdict_seeds > 99) {
+    throw Error("--verdict-seeds", fmt::format("must be odd, from 1 to 99 (a majority must "
+                                               "exist), got {}",
+                                               options.verdict_seeds));
   }
   options.dimension = option_or(a.dimension, "--dimension", 1, 0);
   options.delay = option_or(a.delay, "--delay", 1, 0);
@@ -89,6 +95,10 @@ Action add_analyze(CLI::App& app) {
                   "95 % rank test, about 0.5 s for 1e4 samples; 0 = off, else 19 to 999)");
   cmd->add_option("--seed", args->seed,
                   "seed of the surrogates and the 0-1 test's frequencies (any integer; default 1)");
+  cmd->add_option("--verdict-seeds", args->verdict_seeds,
+                  "seeds the verdict is decided on when the 0-1 test or the surrogates could "
+                  "turn it: --seed and the next ones; the majority's regime is reported, with "
+                  "the tally (odd, 1 to 99; default 5; 1: the first seed alone)");
   cmd->add_option("--dimension", args->dimension, "embedding dimension (>= 1; default: Cao)");
   cmd->add_option("--delay", args->delay,
                   "embedding delay in samples (>= 1; default: mutual information)");

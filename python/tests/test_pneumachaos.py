@@ -67,6 +67,14 @@ def test_lorenz_exponent_and_verdict():
     assert a.curves["divergence"].ndim == 1 and a.curves["psd"].size > 10
 
 
+def test_the_verdict_says_how_it_held_across_seeds():
+    t = np.arange(10000) / 1000.0
+    tone = pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0, wolf=False, verdict_seeds=3)
+    assert tone.verdict["seed_agreement"]["seeds"] == 1  # a repeating tone: no test could turn it
+    with pytest.raises(ValueError, match="verdict_seeds"):
+        pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0, verdict_seeds=2)
+
+
 def test_sine_and_white_noise_are_never_chaotic():
     t = np.arange(5000) / 1000.0
     assert pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0).verdict["chaotic"] is False

@@ -102,6 +102,20 @@ std::string evidence_summary(const AnalysisResult& r) {
   return out;
 }
 
+// The tally over seeds: `seeds` 1 when no random test could turn the verdict.
+nlohmann::json seed_agreement_json(const SeedAgreement& a) {
+  std::vector<std::string> regimes;
+  for (const Regime g : a.regimes) regimes.emplace_back(regime_name(g));
+  return {{"seeds", a.seeds},
+          {"agreeing", a.agreeing},
+          {"share", static_cast<double>(a.agreeing) / static_cast<double>(a.seeds)},
+          {"regimes", regimes},
+          {"zero_one_rerun", a.zero_one_rerun},
+          {"surrogates_rerun", a.surrogates_rerun},
+          {"zero_one_flip_probability", a.zero_one_flip_probability},
+          {"surrogate_flip_probability", a.surrogate_flip_probability}};
+}
+
 }  // namespace
 
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
@@ -110,6 +124,11 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
   std::string out = fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n",
                                 regime_name(r.verdict.regime), r.verdict.chaotic ? "yes" : "no",
                                 r.verdict.stick_slip ? "yes" : "no");
+  if (r.seed_agreement.agreeing < r.seed_agreement.seeds) {
+    out += fmt::format("  the verdict flips with the seed: {} on {} of {} seeds (see the evidence)\n",
+                       regime_name(r.verdict.regime), r.seed_agreement.agreeing,
+                       r.seed_agreement.seeds);
+  }
   if (r.divergence.found_linear_region) {
     out += fmt::format("maximum Lyapunov exponent: {:.4g} +- {:.2g} 1/s (divergence curve)\n",
                        r.divergence.lambda_per_s, r.divergence.uncertainty_per_s);
@@ -267,6 +286,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},
+                  {"seed_agreement", seed_agreement_json(r.seed_agreement)},
                   {"evidence", r.verdict.evidence}};
   return j.dump(2);
 }

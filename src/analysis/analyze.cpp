@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "analysis/series_statistics.hpp"
+#include "seed_agreement.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -49,39 +50,31 @@ void rest_statistics(std::span<const double> x, double level, std::size_t min_le
 // 1e4 samples: 125 samples, two thirds of an orbit), where samples a quarter period apart are
 // already far from redundant. The period here is the maxima spacing of the record smoothed
 // over one delay, which noise does not shorten (docs/notes/analysis.md "Evidence scale").
-void run_evidence_tests(std::span<const double> x, const AnalysisOptions& o, AnalysisResult& r) {
+SeededTestSetup run_evidence_tests(std::span<const double> x, const AnalysisOptions& o,
+                                   AnalysisResult& r) {
   const double period = smoothed_period(x, r.delay.delay);
   const auto quarter = static_cast<std::size_t>(std::lround(period / 4.0));
-  const std::size_t scale = std::clamp<std::size_t>(quarter, 1, r.delay.delay);
+  SeededTestSetup setup;
+  setup.zero_one_step = std::clamp<std::size_t>(quarter, 1, r.delay.delay);
   ZeroOneOptions z = o.zero_one;
   z.seed = o.seed;
   // An oversampled flow walks smoothly at the sample scale and reads K ~ 0 even when chaotic.
-  r.zero_one = zero_one_test(x, scale, z);
-  PredictionOptions p;
-  p.dimension = r.dimension.dimension;
-  p.delay = scale;
-  p.theiler = r.theiler;
-  r.prediction = prediction_errors(x, p);
+  r.zero_one = zero_one_test(x, setup.zero_one_step, z);
+  setup.prediction.dimension = r.dimension.dimension;
+  setup.prediction.delay = setup.zero_one_step;
+  setup.prediction.theiler = r.theiler;
+  r.prediction = prediction_errors(x, setup.prediction);
   SurrogateOptions s = o.surrogates;
   s.seed = o.seed;
-  r.surrogate = surrogate_test(x, p, s);
+  r.surrogate = surrogate_test(x, setup.prediction, s);
 
   RegimeEvidence& e = r.evidence;
-  e.zero_one_run = r.zero_one.run;
-  e.zero_one_note = r.zero_one.reason;
-  e.zero_one_K = r.zero_one.K;
-  e.zero_one_q25 = r.zero_one.K_q25;
-  e.zero_one_q75 = r.zero_one.K_q75;
+  note_zero_one(r.zero_one, e);
   e.prediction_computed = r.prediction.computed;
   e.prediction_nonlinear = r.prediction.nonlinear;
   e.prediction_linear = r.prediction.linear;
-  e.surrogate_run = r.surrogate.run;
-  e.surrogate_note = r.surrogate.reason;
-  e.surrogate_count = r.surrogate.surrogate_statistics.size();
-  e.surrogate_rank = r.surrogate.rank;
-  e.surrogate_p = r.surrogate.p_value;
-  e.surrogate_rejected = r.surrogate.rejected;
-  e.surrogate_more_predictable = r.surrogate.more_predictable;
+  note_surrogates(r.surrogate, e);
+  return setup;
 }
 
 // Wolf's program on a record without deterministic structure measures nothing (white noise
@@ -123,6 +116,11 @@ void AnalysisOptions::validate() const {
   zero_one.validate();
   surrogates.validate();
   verdict.validate();
+  if (verdict_seeds < 1 || verdict_seeds > 99 || verdict_seeds % 2 == 0) {
+    throw Error("analysis.verdict_seeds",
+                fmt::format("must be odd, from 1 to 99 (a majority must exist), got {}",
+                            verdict_seeds));
+  }
 }
 
 namespace {
@@ -257,7 +255,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   r.lines = spectral_lines(x);
   r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
   choose_embedding(x, rate_Hz, o, r);
-  run_evidence_tests(x, o, r);
+  const SeededTestSetup seeded = run_evidence_tests(x, o, r);
   run_exponents(x, rate_Hz, o, r);
   e.repetition =
       self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
@@ -266,6 +264,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
   note_lines(r);
   r.verdict = decide_regime(e, o.verdict);
+  check_seed_agreement(x, o, seeded, r);
   describe_divergence(rate_Hz, o, r);
   return r;
 }

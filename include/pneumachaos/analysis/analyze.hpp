@@ -36,7 +36,23 @@ struct AnalysisOptions {
   /// Off in the library (the sweep analyses thousands of records); `analyze` runs 39.
   SurrogateOptions surrogates{.count = 0};
   VerdictOptions verdict;
+  /// Seeds the verdict is decided on when a random test (the 0-1 test, the surrogates) could
+  /// turn it: seed, seed + 1, ...; the regime a majority gives is reported, with the tally
+  /// (AnalysisResult::seed_agreement). Odd, 1 to 99; 1: the first seed alone.
+  std::size_t verdict_seeds = 5;
   void validate() const;
+};
+
+/// How the verdict held across the seeds of its random tests.
+struct SeedAgreement {
+  std::size_t seeds = 1;     ///< seeds decided on (1: no random test could turn the verdict)
+  std::size_t agreeing = 1;  ///< of them, those giving the reported regime
+  std::vector<Regime> regimes;  ///< the regime on each seed: seed, seed + 1, ...
+  bool zero_one_rerun = false;    ///< the 0-1 test was pivotal, able to turn, run on every seed
+  bool surrogates_rerun = false;  ///< likewise the surrogates (pivotal and able to turn)
+  /// The chances that each test's outcome turns on another seed (0: not run).
+  double zero_one_flip_probability = 0.0;
+  double surrogate_flip_probability = 0.0;
 };
 
 struct AnalysisResult {
@@ -68,6 +84,7 @@ struct AnalysisResult {
   std::vector<std::array<double, 2>> maxima_map;
   RegimeEvidence evidence;
   Verdict verdict;
+  SeedAgreement seed_agreement;
 };
 
 /// Throws Error for a series too short to analyse (fewer than 200 samples), non-finite
