@@ -266,6 +266,7 @@ PYBIND11_MODULE(_core, m) {
   py::class_<AnalysisOptions>(m, "AnalysisOptions")
       .def(py::init<>())
       .def_readwrite("wolf", &AnalysisOptions::wolf)
+      .def_readwrite("velocity", &AnalysisOptions::velocity)
       .def_readwrite("dimension", &AnalysisOptions::dimension)
       .def_readwrite("delay", &AnalysisOptions::delay)
       .def_readwrite("theiler", &AnalysisOptions::theiler)

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -79,6 +81,43 @@ TEST(Regime, StickSlipAndSteadyRecords) {
   const AnalysisResult d = analyze_series(damped, 1000.0);
   EXPECT_EQ(d.verdict.regime, Regime::kSteady);
   EXPECT_FALSE(d.verdict.stick_slip);
+}
+
+// A rest is a run at zero velocity, not any flat stretch near zero of any signal: cubed
+// low-passed Gaussian noise lingers flat at zero on each passage (d(x^3)/dt = 3 x^2 dx/dt),
+// which read as rests. As a velocity it may be cut into rests; as what it is, another
+// quantity, it is not judged for stick-slip, nor is the stick-slip record read as one.
+TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> gauss;
+  std::vector<double> cubed(10000);
+  double y = 0.0;
+  for (double& c : cubed) {
+    y = 0.98 * y + gauss(rng);
+    c = y * y * y;
+  }
+  AnalysisOptions as_velocity;
+  as_velocity.wolf = false;
+  AnalysisOptions as_other = as_velocity;
+  as_other.velocity = false;
+  EXPECT_GT(analyze_series(cubed, 1000.0, as_velocity).evidence.rest_intervals, 0u);
+  const AnalysisResult other = analyze_series(cubed, 1000.0, as_other);
+  EXPECT_FALSE(other.verdict.stick_slip);
+  EXPECT_NE(other.verdict.regime, Regime::kStickSlip);
+  EXPECT_FALSE(other.evidence.rests_judged);
+  EXPECT_EQ(other.evidence.rest_intervals, 0u);
+  bool said = false;
+  for (const std::string& line : other.verdict.evidence)
+    said = said || line.find("stick-slip: not judged") != std::string::npos;
+  EXPECT_TRUE(said);
+
+  std::vector<double> ss(10000);
+  for (std::size_t i = 0; i < ss.size(); ++i) {
+    const double phase = std::fmod(2.0 * static_cast<double>(i) / 1000.0, 1.0);
+    ss[i] = phase < 0.4 ? 0.0 : 0.1 * std::sin((phase - 0.4) / 0.6 * std::numbers::pi);
+  }
+  EXPECT_TRUE(analyze_series(ss, 1000.0, as_velocity).verdict.stick_slip);
+  EXPECT_FALSE(analyze_series(ss, 1000.0, as_other).verdict.stick_slip);
 }
 
 // Stick-slip whose slips follow a rule: each slip a half sine after a rest, the n-th slip's

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <climits>
+#include <regex>
 #include <cstdint>
 #include <optional>
 
@@ -30,6 +33,7 @@ AnalysisResult analyzed(const Channel& channel, double rate_Hz, const AnalysisOp
 struct AnalyzeArgs {
   std::string file;
   std::string column = "v";
+  std::string quantity;  ///< velocity, other, or empty: from the column (record_is_velocity)
   std::optional<double> rate_Hz, from_s, to_s;
   std::string json;
   std::string series_out;
@@ -59,6 +63,22 @@ AnalysisOptions analysis_options(const AnalyzeArgs& a) {
   return options;
 }
 
+// A rest is zero velocity, so stick-slip is judged only on a velocity: as --quantity says,
+// else a column named v, vel, velocity or speed (before any "_suffix") or whose unit is a length
+// per second; another named column is not; a file without a header is taken as the product's
+// records are, a velocity (the summary says which was assumed).
+bool record_is_velocity(const std::string& quantity, const Channel& c) {
+  if (!quantity.empty()) return quantity == "velocity";
+  static const std::regex unnamed(R"(column [0-9]+)");  // read_csv_series, no header
+  if (c.unit.empty() && std::regex_match(c.name, unnamed)) return true;
+  std::string name = c.name.substr(0, c.name.find('_'));
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  static const std::regex speed_unit(R"((m|mm|um|µm|cm|km|in|ft)/s)");
+  return name == "v" || name == "vel" || name == "velocity" || name == "speed" ||
+         std::regex_match(c.unit, speed_unit);
+}
+
 }  // namespace
 
 Action add_analyze(CLI::App& app) {
@@ -76,6 +96,12 @@ Action add_analyze(CLI::App& app) {
   cmd->add_option("--column", args->column,
                   "column to analyse: header name (default v), or its number in a file "
                   "without a header (default 1, unless that column looks like a clock)");
+  cmd->add_option("--quantity", args->quantity,
+                  "what the column measures: velocity (stick-slip is judged from its rests at "
+                  "zero) or other (not judged); default: velocity for a column named v, vel, "
+                  "velocity or speed or with a unit of length/s, or in a file without a header; "
+                  "other for any other named column")
+      ->check(CLI::IsMember({"velocity", "other"}));
   cmd->add_option("--rate", args->rate_Hz,
                   "sample rate [Hz] of a file without a time column (with one, the two must "
                   "agree)");
@@ -113,7 +139,9 @@ Action add_analyze(CLI::App& app) {
         FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
         [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
     const Channel& channel = series.channels().front();
-    const AnalysisResult r = analyzed(channel, series.rate_Hz(), options, args->file);
+    AnalysisOptions chosen = options;
+    chosen.velocity = record_is_velocity(args->quantity, channel);
+    const AnalysisResult r = analyzed(channel, series.rate_Hz(), chosen, args->file);
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
     // The JSON and the curves appear together or not at all.
     OutputSet outputs;

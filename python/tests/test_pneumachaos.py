@@ -71,6 +71,10 @@ def test_the_verdict_says_how_it_held_across_seeds():
     t = np.arange(10000) / 1000.0
     tone = pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0, wolf=False, verdict_seeds=3)
     assert tone.verdict["seed_agreement"]["seeds"] == 1  # a repeating tone: no test could turn it
+    stick = np.where(np.mod(2 * t, 1.0) < 0.4, 0.0, 0.1 * np.sin(np.mod(2 * t, 1.0) - 0.4))
+    assert pc.analyze(stick, 1000.0, wolf=False).verdict["stick_slip"] is True
+    other = pc.analyze(stick, 1000.0, wolf=False, velocity=False).verdict
+    assert other["stick_slip"] is False and other["rests_judged"] is False
     with pytest.raises(ValueError, match="verdict_seeds"):
         pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0, verdict_seeds=2)
 

@@ -286,6 +286,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
   j["verdict"] = {{"regime", regime_name(r.verdict.regime)},
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},
+                  {"rests_judged", r.evidence.rests_judged},
                   {"seed_agreement", seed_agreement_json(r.seed_agreement)},
                   {"evidence", r.verdict.evidence}};
   return j.dump(2);

@@ -159,7 +159,8 @@ void describe_record(std::span<const double> x, const AnalysisOptions& o, Analys
   const std::span<const double> last = x.subspan(x.size() / 2);
   e.last_half_mean = mean_of(last);
   e.last_half_std = standard_deviation(last);
-  rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
+  e.rests_judged = o.velocity;
+  if (o.velocity) rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
 }
 
 // Delay (mutual information), Theiler window, dimension (Cao), unless given.

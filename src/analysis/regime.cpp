@@ -225,12 +225,17 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     return v;
   }
   Criteria c;
-  v.stick_slip =
-      note(e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share,
-           fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x max|x| "
-                       "(need {}), {:.1f} % of the time at rest (need {:.1f} %)",
-                       e.rest_intervals, o.min_rest_samples, o.rest_fraction, o.min_rest_intervals,
-                       100.0 * e.rest_share, 100.0 * o.min_rest_share));
+  if (e.rests_judged) {
+    v.stick_slip =
+        note(e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share,
+             fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x "
+                         "max|x| (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
+                         e.rest_intervals, o.min_rest_samples, o.rest_fraction,
+                         o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));
+  } else {
+    note.info("stick-slip: not judged: the record is not a velocity, and a rest is a run at zero "
+              "velocity");
+  }
   const double scale = std::max(std::abs(e.last_half_mean), e.range);
   c.steady = note(is_steady(e, o), fmt::format("steady: std of the last half {:.4g} <= {} x {:.4g}",
                                                e.last_half_std, o.steady_variation, scale));

@@ -29,6 +29,9 @@ struct AnalysisOptions {
   std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)...
   bool theiler_given = false;  ///< ...unless set: then `theiler` as given, 0 included
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
+  /// The record is a velocity, where zero means rest: stick-slip is judged from its rests.
+  /// false for any other signal (a position, a pressure, a model's coordinate): not judged.
+  bool velocity = true;
   /// Seeds the 0-1 test's random frequencies and the surrogates (each result is a function of
   /// the record, the options and this seed alone).
   std::uint64_t seed = 1;

@@ -71,6 +71,8 @@ struct VerdictOptions {
 struct RegimeEvidence {
   std::size_t samples = 0;
   double mean = 0.0, range = 0.0, last_half_std = 0.0, last_half_mean = 0.0;
+  /// Rests are looked for only in a velocity, where zero means rest (AnalysisOptions::velocity).
+  bool rests_judged = true;
   std::size_t rest_intervals = 0;
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;

@@ -26,7 +26,8 @@ struct CsvSeriesOptions {
   void validate() const;
 };
 
-/// Reads the column as a one-channel TimeSeries named after it; path "-" reads standard
+/// Reads the column as a one-channel TimeSeries named after it (its header name and unit;
+/// "column N" with no unit in a file without a header); path "-" reads standard
 /// input. A first line whose fields are all numbers is data (no header). Throws Error naming
 /// the file, line and column for a missing column, a non-numeric or non-finite cell, a row
 /// with the wrong number of fields, non-increasing or non-uniform time, or fewer than 2
