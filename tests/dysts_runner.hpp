@@ -120,6 +120,7 @@ inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
   o.surrogates.count = 39;
   o.seed = seed;
   o.wolf = false;
+  o.embedding_spread = true;  // as `analyze` runs it
   const AnalysisResult r = analyze_series(x, rate, o);
   const Benettin span = benettin(s, static_cast<double>(n) / kPointsPerPeriod);
   Row row{s.name, n, long_run.lambda, span.lambda, long_run.spread, s.period,

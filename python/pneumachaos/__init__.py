@@ -133,15 +133,18 @@ def simulate(scenario=None, duration_s=None, rate_Hz=None):
 
 
 def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verdict_seeds=5,
-            velocity=True):
+            velocity=True, embedding_spread=True):
     """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
     rate_Hz. dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1
     test's; verdict_seeds (odd): seeds the verdict is decided on where that test could turn
     it (verdict["seed_agreement"] holds the tally). velocity: x is a velocity, where zero means
-    rest, and stick-slip is judged from its rests; False for any other signal (not judged)."""
+    rest, and stick-slip is judged from its rests; False for any other signal (not judged).
+    embedding_spread: the divergence exponent's uncertainty also covers its values at embedding
+    dimensions m - 1 and m + 1 (as `analyze`)."""
     options = _core.AnalysisOptions()
     options.wolf = bool(wolf)
     options.velocity = bool(velocity)
+    options.embedding_spread = bool(embedding_spread)
     for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler),
                         ("seed", seed), ("verdict_seeds", verdict_seeds)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:

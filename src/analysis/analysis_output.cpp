@@ -210,7 +210,7 @@ nlohmann::json divergence_json(const AnalysisResult& r) {
       {"aligned_in_time", r.divergence.aligned},
       {"method",
        "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
-       "fit window, segments"}};
+       "fit window, segments, each half of the window, embedding dimensions m - 1 and m + 1"}};
   d["status"] = r.divergence_status;
   // Without a linear region, a deterministic record's wide estimate (analyze.hpp
   // divergence_estimate): a value always with its range, never a range alone.
@@ -232,6 +232,15 @@ nlohmann::json divergence_json(const AnalysisResult& r) {
       {"values", segments},
       {"unit", "1/s"},
       {"without_own_linear_region", r.divergence.segments_without_region}};
+  // The choices behind the value, which its uncertainty covers (exponent_spread.hpp).
+  const ExponentSpread& s = r.exponent_spread;
+  d["spread"] = r.divergence.found_linear_region
+                    ? nlohmann::json{{"window", number(s.window_per_s)},
+                                     {"embedding", number(s.embedding_per_s)},
+                                     {"dimensions", s.dimensions},
+                                     {"values", s.lambda_per_s},
+                                     {"unit", "1/s"}}
+                    : nlohmann::json(nullptr);
   return d;
 }
 

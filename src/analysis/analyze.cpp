@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "analysis/series_statistics.hpp"
+#include "exponent_spread.hpp"
 #include "seed_agreement.hpp"
 #include "pneumachaos/core/error.hpp"
 
@@ -219,6 +220,10 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   d.slope_spacing =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
   r.divergence = divergence_exponent(x, rate_Hz, d);
+  if (r.divergence.found_linear_region) {
+    r.exponent_spread = exponent_spread(x, rate_Hz, d, r.divergence, o.embedding_spread);
+    r.divergence.uncertainty_per_s = widened_uncertainty(r.divergence, r.exponent_spread);
+  }
   if (o.wolf) run_wolf(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;

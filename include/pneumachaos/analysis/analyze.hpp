@@ -29,6 +29,11 @@ struct AnalysisOptions {
   std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)...
   bool theiler_given = false;  ///< ...unless set: then `theiler` as given, 0 included
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
+  /// Also measure the divergence exponent at embedding dimensions m - 1 and m + 1, and widen
+  /// its uncertainty to reach them (AnalysisResult::exponent_spread): two more divergence
+  /// curves, 60 % more time on a chaotic record. `analyze` and the Python module turn it on;
+  /// off here, where sweeps analyse thousands of records and no map reads the uncertainty.
+  bool embedding_spread = false;
   /// The record is a velocity, where zero means rest: stick-slip is judged from its rests.
   /// false for any other signal (a position, a pressure, a model's coordinate): not judged.
   bool velocity = true;
@@ -56,6 +61,16 @@ struct SeedAgreement {
   /// The chances that each test's outcome turns on another seed (0: not run).
   double zero_one_flip_probability = 0.0;
   double surrogate_flip_probability = 0.0;
+};
+
+/// What the divergence exponent depends on beyond its own curve, which its uncertainty
+/// includes: the window (each half of it fitted alone) and the embedding dimension (m - 1 and
+/// m + 1, those with a linear region; AnalysisOptions::embedding_spread).
+struct ExponentSpread {
+  double window_per_s = 0.0;  ///< largest change of the value when half the window is fitted
+  std::vector<std::size_t> dimensions;
+  std::vector<double> lambda_per_s;  ///< the value at each of `dimensions`
+  double embedding_per_s = 0.0;      ///< largest |lambda(m') - lambda(m)|
 };
 
 struct AnalysisResult {
@@ -88,6 +103,7 @@ struct AnalysisResult {
   RegimeEvidence evidence;
   Verdict verdict;
   SeedAgreement seed_agreement;
+  ExponentSpread exponent_spread;
 };
 
 /// Throws Error for a series too short to analyse (fewer than 200 samples), non-finite

@@ -1,0 +1,66 @@
+#include "exponent_spread.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+double least_squares_slope(const std::vector<double>& y, std::size_t first, std::size_t last) {
+  const double n = static_cast<double>(last - first + 1);
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t k = first; k <= last; ++k) {
+    const double t = static_cast<double>(k);
+    sx += t;
+    sy += y[k];
+    sxx += t * t;
+    sxy += t * y[k];
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+// A straight stretch gives the same slope on either half; a bending one does not.
+double window_spread(const DivergenceResult& d, double rate_Hz) {
+  const std::size_t mid = (d.fit_first + d.fit_last) / 2;
+  if (mid < d.fit_first + 2 || d.fit_last < mid + 2) return 0.0;  // halves of under 3 points
+  double spread = 0.0;
+  for (const auto& [a, b] : {std::pair{d.fit_first, mid}, std::pair{mid, d.fit_last}}) {
+    spread = std::max(spread, std::abs(least_squares_slope(d.curve, a, b) * rate_Hz -
+                                       d.lambda_per_s));
+  }
+  return spread;
+}
+
+}  // namespace
+
+ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, DivergenceOptions options,
+                               const DivergenceResult& d, bool embeddings) {
+  ExponentSpread s;
+  s.window_per_s = window_spread(d, rate_Hz);
+  if (!embeddings) return s;
+  const std::size_t m = options.dimension;
+  for (const std::size_t k : {m - 1, m + 1}) {
+    if (k < 1) continue;
+    options.dimension = k;
+    try {
+      const DivergenceResult n = divergence_exponent(x, rate_Hz, options);
+      if (!n.found_linear_region) continue;
+      s.dimensions.push_back(k);
+      s.lambda_per_s.push_back(n.lambda_per_s);
+      s.embedding_per_s = std::max(s.embedding_per_s, std::abs(n.lambda_per_s - d.lambda_per_s));
+    } catch (const Error&) {
+      // Too short to follow pairs in dimension k: that dimension says nothing.
+    }
+  }
+  return s;
+}
+
+double widened_uncertainty(const DivergenceResult& d, const ExponentSpread& s) {
+  return std::hypot(d.uncertainty_per_s, s.window_per_s / 1.96, s.embedding_per_s / 1.96);
+}
+
+}  // namespace pneumachaos
