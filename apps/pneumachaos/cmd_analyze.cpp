@@ -120,8 +120,8 @@ Action add_analyze(CLI::App& app) {
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
   cmd->add_flag("--no-embedding-spread", args->no_embedding_spread,
                 "leave out of the divergence exponent's uncertainty its values at embedding "
-                "dimensions m - 1 and m + 1 (two fewer divergence curves, about 40 % less time "
-                "on a chaotic record)");
+                "dimensions m - 1 and m + 1 (two fewer divergence curves, about 15 % less work on "
+                "a chaotic record)");
   cmd->add_option("--surrogates", args->surrogates,
                   "IAAFT surrogates for the test against linear noise (default 39: a two-sided "
                   "95 % rank test, about 0.5 s for 1e4 samples; 0 = off, else 19 to 999)");

@@ -31,7 +31,8 @@ struct AnalysisOptions {
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
   /// Also measure the divergence exponent at embedding dimensions m - 1 and m + 1, and widen
   /// its uncertainty to reach them (AnalysisResult::exponent_spread): two more divergence
-  /// curves, 60 % more time on a chaotic record. `analyze` and the Python module turn it on;
+  /// curves on a quarter of the reference pairs, 20 % more work on a chaotic record. `analyze`
+  /// and the Python module turn it on;
   /// off here, where sweeps analyse thousands of records and no map reads the uncertainty.
   bool embedding_spread = false;
   /// The record is a velocity, where zero means rest: stick-slip is judged from its rests.
