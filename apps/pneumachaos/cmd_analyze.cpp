@@ -124,7 +124,9 @@ Action add_analyze(CLI::App& app) {
                 "a chaotic record)");
   cmd->add_option("--surrogates", args->surrogates,
                   "IAAFT surrogates for the test against linear noise (default 39: a two-sided "
-                  "95 % rank test, about 0.5 s for 1e4 samples; 0 = off, else 19 to 999)");
+                  "95 % rank test, about 0.5 s for 1e4 samples, up to five times that where "
+                  "its outcome could turn the verdict (--verdict-seeds); 0 = off, else 19 to "
+                  "999)");
   cmd->add_option("--seed", args->seed,
                   "seed of the surrogates and the 0-1 test's frequencies (any integer; default 1)");
   cmd->add_option("--verdict-seeds", args->verdict_seeds,
