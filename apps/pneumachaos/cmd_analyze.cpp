@@ -52,23 +52,21 @@ AnalysisOptions analysis_options(const AnalyzeArgs& a) {
     const long long seed = integer_option("--seed", *a.seed, LLONG_MIN);
     options.seed = static_cast<std::uint64_t>(seed);  // negative seeds wrap: any integer
   }
-  options.verdict_seeds = option_or(a.verdict_seeds, "--verdict-seeds", 1, 5);
-  if (options.verdict_seeds % 2 == 0 || options.verdict_seeds > 99) {
-    throw Error("--verdict-seeds", fmt::format("must be odd, from 1 to 99 (a majority must "
-                                               "exist), got {}",
-                                               options.verdict_seeds));
-  }
+  options.verdict_seeds = option_or(a.verdict_seeds, "--verdict-seeds", 0, 5);
   options.dimension = option_or(a.dimension, "--dimension", 1, 0);
   options.delay = option_or(a.delay, "--delay", 1, 0);
   options.theiler_given = a.theiler.has_value();
   options.theiler = option_or(a.theiler, "--theiler", 0, 0);
+  // Checked before the record is read, naming the flag rather than the library's field.
+  with_flag_names(FlagNames{{AnalysisOptions::kVerdictSeedsField.id, "--verdict-seeds"}},
+                  [&] { options.validate(); });
   return options;
 }
 
 // A rest is zero velocity, so stick-slip is judged only on a velocity: as --quantity says,
 // else a column named v, vel, velocity or speed (before any "_suffix") or whose unit is a length
 // per second; another named column is not; a file without a header is taken as the product's
-// records are, a velocity (the summary says which was assumed).
+// records are, a velocity (the verdict's evidence says whether rests were judged).
 bool record_is_velocity(const std::string& quantity, const Channel& c) {
   if (!quantity.empty()) return quantity == "velocity";
   static const std::regex unnamed(R"(column [0-9]+)");  // read_csv_series, no header

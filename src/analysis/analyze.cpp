@@ -118,7 +118,7 @@ void AnalysisOptions::validate() const {
   surrogates.validate();
   verdict.validate();
   if (verdict_seeds < 1 || verdict_seeds > 99 || verdict_seeds % 2 == 0) {
-    throw Error("analysis.verdict_seeds",
+    throw Error(kVerdictSeedsField,
                 fmt::format("must be odd, from 1 to 99 (a majority must exist), got {}",
                             verdict_seeds));
   }

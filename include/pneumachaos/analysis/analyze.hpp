@@ -19,6 +19,7 @@
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"
+#include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 
@@ -49,6 +50,7 @@ struct AnalysisOptions {
   /// turn it: seed, seed + 1, ...; the regime a majority gives is reported, with the tally
   /// (AnalysisResult::seed_agreement). Odd, 1 to 99; 1: the first seed alone.
   std::size_t verdict_seeds = 5;
+  static constexpr ErrorField kVerdictSeedsField{"analysis.verdict_seeds", "verdict_seeds"};
   void validate() const;
 };
 
