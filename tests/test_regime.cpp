@@ -61,13 +61,19 @@ TEST(Regime, ShortLorenzIsNeverPeriodic) {
   EXPECT_NE(r.verdict.regime, Regime::kQuasiPeriodic);
 }
 
-TEST(Regime, StickSlipAndSteadyRecords) {
-  // A velocity that rests at exactly zero for 40 % of each 0.5 s cycle, then a half sine.
+// A velocity that rests at exactly zero for 40 % of each 0.5 s cycle, then a half sine
+// (10,000 samples at 1 kHz).
+std::vector<double> resting_half_sines() {
   std::vector<double> ss(10000);
   for (std::size_t i = 0; i < ss.size(); ++i) {
     const double phase = std::fmod(2.0 * static_cast<double>(i) / 1000.0, 1.0);
     ss[i] = phase < 0.4 ? 0.0 : 0.1 * std::sin((phase - 0.4) / 0.6 * std::numbers::pi);
   }
+  return ss;
+}
+
+TEST(Regime, StickSlipAndSteadyRecords) {
+  const std::vector<double> ss = resting_half_sines();
   const AnalysisResult s = analyze_series(ss, 1000.0);
   EXPECT_TRUE(s.verdict.stick_slip);
   EXPECT_EQ(s.verdict.regime, Regime::kStickSlip);
@@ -111,11 +117,7 @@ TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
     said = said || line.find("stick-slip: not judged") != std::string::npos;
   EXPECT_TRUE(said);
 
-  std::vector<double> ss(10000);
-  for (std::size_t i = 0; i < ss.size(); ++i) {
-    const double phase = std::fmod(2.0 * static_cast<double>(i) / 1000.0, 1.0);
-    ss[i] = phase < 0.4 ? 0.0 : 0.1 * std::sin((phase - 0.4) / 0.6 * std::numbers::pi);
-  }
+  const std::vector<double> ss = resting_half_sines();
   EXPECT_TRUE(analyze_series(ss, 1000.0, as_velocity).verdict.stick_slip);
   EXPECT_FALSE(analyze_series(ss, 1000.0, as_other).verdict.stick_slip);
 }

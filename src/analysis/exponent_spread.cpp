@@ -5,23 +5,11 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/linear_region.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {
-
-double least_squares_slope(const std::vector<double>& y, std::size_t first, std::size_t last) {
-  const double n = static_cast<double>(last - first + 1);
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t k = first; k <= last; ++k) {
-    const double t = static_cast<double>(k);
-    sx += t;
-    sy += y[k];
-    sxx += t * t;
-    sxy += t * y[k];
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 // A straight stretch gives the same slope on either half; a bending one does not.
 double window_spread(const DivergenceResult& d, double rate_Hz) {
@@ -29,7 +17,7 @@ double window_spread(const DivergenceResult& d, double rate_Hz) {
   if (mid < d.fit_first + 2 || d.fit_last < mid + 2) return 0.0;  // halves of under 3 points
   double spread = 0.0;
   for (const auto& [a, b] : {std::pair{d.fit_first, mid}, std::pair{mid, d.fit_last}}) {
-    spread = std::max(spread, std::abs(least_squares_slope(d.curve, a, b) * rate_Hz -
+    spread = std::max(spread, std::abs(fit_line(d.curve, a, b).slope * rate_Hz -
                                        d.lambda_per_s));
   }
   return spread;
