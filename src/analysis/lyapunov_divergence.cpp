@@ -10,6 +10,7 @@
 #include "analysis/continuous_alignment.hpp"
 #include "analysis/linear_region.hpp"
 #include "log_array.hpp"
+#include "pair_distances.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
@@ -113,14 +114,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
     const std::span<const double> other =
         p.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
                   : x.subspan(nb.index, span);
-    // Coordinate by coordinate over all steps (contiguous, so the compiler vectorises it);
-    // each d2[k] still sums its coordinates in order, so the values are the same.
-    std::fill(d2.begin(), d2.end(), 0.0);
-    for (std::size_t d = 0; d < e.dimension(); ++d) {
-      const double* a = x.data() + i + d * o.delay;
-      const double* c = other.data() + d * o.delay;
-      for (std::size_t k = 0; k <= p.K; ++k) d2[k] += (a[k] - c[k]) * (a[k] - c[k]);
-    }
+    squared_pair_distances(x.data() + i, other.data(), e.dimension(), o.delay, d2);
     log_array(d2, logs);  // vectorised: the logarithms were half of the curve's time
     add_log_distances(d2, logs, bs.sum[b], bs.count[b]);
     ++bs.references;

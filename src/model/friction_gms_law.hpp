@@ -13,7 +13,15 @@ namespace pneumachaos::friction_law {
 
 /// Share of the Stribeck level carried by element i (0-based) of n: proportional to i + 1, so
 /// the elements (of equal stiffness) slip one after another as the deflection grows.
-inline double gms_force_share(int i, int n) { return 2.0 * (i + 1) / (n * (n + 1.0)); }
+/// Tabulated when compiled (the same rounded quotients): the division sat on the element
+/// loop's critical path in every friction evaluation.
+inline constexpr auto kGmsForceShares = [] {
+  std::array<std::array<double, kMaxGmsElements>, kMaxGmsElements + 1> t{};
+  for (int n = 1; n <= kMaxGmsElements; ++n)
+    for (int i = 0; i < n; ++i) t[n][i] = 2.0 * (i + 1) / (n * (n + 1.0));
+  return t;
+}();
+inline double gms_force_share(int i, int n) { return kGmsForceShares[n][i]; }
 
 /// Stiffness of one element: the total presliding stiffness in equal shares.
 template <typename P>
@@ -21,10 +29,16 @@ double gms_element_stiffness(const P& p) {
   return p.gms.stiffness_N_per_m / p.gms.count;
 }
 
+/// Deflection at which element i of n, of stiffness k, carries its share of the level g.
+template <typename T>
+T gms_reach_m(int i, int n, const T& g, double k) {
+  return gms_force_share(i, n) * g / k;
+}
+
 /// Deflection at which element i carries its share of the level g: where it slips.
 template <typename T, typename P>
 T gms_reach_m(const P& p, int i, const T& g) {
-  return gms_force_share(i, p.gms.count) * g / gms_element_stiffness(p);
+  return gms_reach_m(i, p.gms.count, g, gms_element_stiffness(p));
 }
 
 /// Rate of that slip deflection while the level changes at dg/dt.
@@ -74,12 +88,16 @@ T gms_N(const P& p, const BasicFrictionInput<T>& in, const T* z, T* dz, int bran
   const double sgn = branch != 0 ? branch : (v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0));
   const T speed = branch == 0 ? T(abs(v)) : T(sgn * v);
   const T g = stribeck_level_N(p, in, speed, branch != 0);
+  // Read once: the writes to dz could alias p's members, so the compiler would reload them
+  // and divide for the stiffness on every element.
+  const int n = p.gms.count;
+  const double k = gms_element_stiffness(p);
   T elastic(0.0);
-  for (int i = 0; i < p.gms.count; ++i) {
-    dz[i] = gms_element_rate(p, v, speed, sgn, z[i], gms_reach_m(p, i, g));
+  for (int i = 0; i < n; ++i) {
+    dz[i] = gms_element_rate(p, v, speed, sgn, z[i], gms_reach_m(i, n, g, k));
     elastic += z[i];
   }
-  return gms_element_stiffness(p) * elastic + p.curve.viscous_Ns_per_m * v;
+  return k * elastic + p.curve.viscous_Ns_per_m * v;
 }
 
 // ---- The quasi-static limit of the elements' loading (docs/model.md, "Friction") ----------

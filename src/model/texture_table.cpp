@@ -30,17 +30,6 @@ TextureTable::TextureTable(std::span<const TextureMode> modes, double from_m, do
   }
 }
 
-std::optional<double> TextureTable::at(double position_m) const {
-  const double t = (position_m - from_m_) / step_m_;
-  // The negated comparison also turns a NaN position away.
-  if (!(t >= 0.0 && t < static_cast<double>(value_.size() - 1))) return std::nullopt;
-  const auto j = static_cast<std::size_t>(t);
-  const double u = t - static_cast<double>(j), w = 1.0 - u;
-  // Hermite basis on [0, 1]: (1 + 2u) w^2, u w^2, u^2 (3 - 2u), -u^2 w.
-  return (1.0 + 2.0 * u) * w * w * value_[j] + u * w * w * slope_[j] +
-         u * u * (3.0 - 2.0 * u) * value_[j + 1] - u * u * w * slope_[j + 1];
-}
-
 std::shared_ptr<const TextureTable> tabulate_texture(std::span<const TextureMode> modes,
                                                      double from_m, double to_m) {
   if (modes.empty()) return nullptr;
