@@ -2,6 +2,7 @@
 // from theory: chaotic maps and flows reject the linear-stochastic null, linear Gaussian
 // processes keep it (at the test's 5 % level); K -> 1 for chaos, -> 0 for periodic motion.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "analysis/fft.hpp"
+#include "pneumachaos/analysis/prediction_error.hpp"
 #include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/analysis/zero_one_test.hpp"
@@ -69,6 +71,32 @@ TEST(Surrogates, ChaosRejectsTheLinearNullAndLinearNoiseKeepsIt) {
     kept += surrogate_test(autoregressive(4000, 0.9, 0.0, seed), p, o).rejected ? 0 : 1;
   }
   EXPECT_GE(kept, 3);
+}
+
+// The surrogates are made side by side on the available threads; each one's seed follows
+// from its index, so the statistics, in order, are the same on one thread and on two.
+TEST(Surrogates, SameStatisticsOnOneThreadAndOnTwo) {
+  PredictionOptions p;
+  p.dimension = 2;
+  p.delay = 1;
+  SurrogateOptions o;
+  o.count = 19;
+  const auto x = henon_map(2000);
+  const auto on = [&](int threads) {
+    SurrogateTest t;
+    tbb::task_arena(threads).execute([&] { t = surrogate_test(x, p, o); });
+    return t;
+  };
+  const SurrogateTest one = on(1), two = on(2);
+  ASSERT_TRUE(one.run);
+  ASSERT_EQ(one.surrogate_statistics.size(), 19u);
+  EXPECT_EQ(one.surrogate_statistics, two.surrogate_statistics);
+  EXPECT_EQ(one.statistic, two.statistic);
+  // And each is the statistic of the surrogate its seed makes, on its own.
+  const auto third = iaaft_surrogate(std::span<const double>(x).subspan(one.offset, one.samples),
+                                     o.seed * 0x9E3779B97F4A7C15ULL + 2, o.max_iterations,
+                                     o.spectral_tolerance);
+  EXPECT_EQ(one.surrogate_statistics[2], nonlinear_prediction_error(third, p));
 }
 
 TEST(Surrogates, ShortRecordsAndZeroCountAreNotRunAndSaySo) {

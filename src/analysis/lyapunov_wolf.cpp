@@ -24,7 +24,8 @@ void WolfOptions::validate(std::size_t n) const {
 namespace {
 
 struct Candidate {
-  double time, distance, angle;
+  double time, distance;
+  double misalignment;  ///< lower is better: the distance (first neighbour) or minus the cosine
 };
 
 // A neighbour followed along the fiducial trajectory.
@@ -109,7 +110,8 @@ class WolfGeometry {
     for (double scale = radius; scale <= 8.0 * radius; scale *= 2.0) {
       const Candidate* best = nullptr;
       for (const Candidate& c : pool_) {
-        if (c.distance <= scale && (best == nullptr || c.angle < best->angle)) best = &c;
+        if (c.distance <= scale && (best == nullptr || c.misalignment < best->misalignment))
+          best = &c;
       }
       if (best != nullptr) {
         d_out = best->distance;
@@ -164,13 +166,15 @@ class WolfGeometry {
       const double j = place(fid, c.index);
       const double d = separation(fid, j, cand_);
       if (d < min_scale_) continue;
-      double angle = d;  // the first neighbour: simply the nearest
+      double misalignment = d;  // the first neighbour: simply the nearest
       if (old_sep != nullptr) {
+        // The smallest angle to the old separation is the largest cosine: acos is decreasing,
+        // and it was a fifth of a whole analysis of the Henon map, where replacements are frequent.
         double dot = 0.0;
         for (std::size_t k = 0; k < o_.dimension; ++k) dot += cand_[k] * (*old_sep)[k];
-        angle = std::acos(std::clamp(dot / (d * old_norm), -1.0, 1.0));
+        misalignment = -std::clamp(dot / (d * old_norm), -1.0, 1.0);
       }
-      pool_.push_back({j, d, angle});
+      pool_.push_back({j, d, misalignment});
     }
   }
 

@@ -11,8 +11,6 @@
 #include <mutex>
 #include <thread>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "distribution.hpp"
@@ -20,9 +18,8 @@
 #include "pneumachaos/core/error.hpp"
 #include "model/variation.hpp"
 #include "sweep/grid_refinement.hpp"
-#include "parallel_body.hpp"
+#include "core/parallel_indices.hpp"
 #include "sweep_outputs.hpp"
-#include "tsan_annotations.hpp"
 
 namespace pneumachaos {
 
@@ -164,15 +161,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
   // per task (grain 1), as runs differ in cost by an order of magnitude.
   const auto threads = static_cast<int>(thread_count(options.threads, pending.size(), dist));
   tbb::task_arena arena(threads);
-  // The orderings parallel_for guarantees, as ThreadSanitizer sees them (tsan_annotations.hpp).
-  char handed_out = 0, handed_back = 0;
-  detail::tsan_release(&handed_out);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 1),
-                      detail::ParallelBody<decltype(one)>{&one, &handed_out, &handed_back},
-                      tbb::simple_partitioner());
-  });
-  detail::tsan_acquire(&handed_back);
+  arena.execute([&] { detail::parallel_indices(pending.size(), one); });
   if (failure) std::rethrow_exception(failure);
   journal.sync();
 }

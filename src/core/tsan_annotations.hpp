@@ -1,7 +1,7 @@
 #pragma once
 // The orderings oneTBB guarantees, stated for ThreadSanitizer. Debian's libtbb is not
 // instrumented: the atomics with which it hands a task to a worker thread and reports its end
-// are invisible to TSan, which then calls every read of the sweep's data in a task a race
+// are invisible to TSan, which then calls every read of the caller's data in a task a race
 // with the main thread's writes before parallel_for. The TSan build (scripts/test-tsan.sh)
 // marks the two edges parallel_for promises: what comes before it happens before every task,
 // and every task before it returns. Tasks stay unordered among themselves, so a race between

@@ -1,6 +1,6 @@
 #pragma once
-// The body of the sweep's parallel_for (sweep_runner.cpp): runs `one` for each index of a
-// range between the ThreadSanitizer hand-over marks (tsan_annotations.hpp). It lives in its
+// The body of parallel_indices's parallel_for (parallel_indices.hpp): runs `one` for each index
+// of a range between the ThreadSanitizer hand-over marks (tsan_annotations.hpp). It lives in its
 // own file because scripts/tsan.supp names this file: the body's own accesses are only the
 // reads of its members, which oneTBB copies into task objects that its uninstrumented library
 // recycles between threads unseen by TSan. Whatever `one` does is outside this file and
