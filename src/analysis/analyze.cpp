@@ -168,6 +168,11 @@ void describe_record(std::span<const double> x, const AnalysisOptions& o, Analys
 void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
                       AnalysisResult& r) {
   r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
+  // The orbit is the oscillation's; a record that rests between slips has none to speak of
+  // (its maxima are the slips), and there the cap turned the rig's stick-slip records chaotic
+  // against the model's own exponent (docs/notes/analysis.md, "Tried and not adopted").
+  if (o.delay == 0 && !rests_like_stick_slip(r.evidence, o.verdict))
+    r.delay = delay_within_an_orbit(r.delay, r.period_samples);
   const std::size_t tau = r.delay.delay;
   const std::size_t zero_lag =
       r.acf.first_zero_s > 0 ? static_cast<std::size_t>(std::lround(r.acf.first_zero_s * rate_Hz))

@@ -138,4 +138,17 @@ DimensionChoice choose_dimension(std::span<const double> x, std::size_t delay, s
   return c;
 }
 
+// On an oscillating record the first minimum of I lies near a quarter of the orbit. A minimum
+// a whole orbit or more away (dysts's ShimizuMorioka: three orbits, Thomas: two) is a later
+// minimum or an artefact of the binning, and with it x(t + tau) nearly repeats x(t): the
+// reconstruction folds onto itself.
+DelayChoice delay_within_an_orbit(DelayChoice c, double orbit_samples) {
+  if (!(orbit_samples >= 8.0) || static_cast<double>(c.delay) < orbit_samples) return c;
+  c.method = fmt::format("a quarter of the orbit (the mutual-information minimum at {} samples "
+                         "lies an orbit of {:.0f} or more away)",
+                         c.delay, orbit_samples);
+  c.delay = static_cast<std::size_t>(std::lround(0.25 * orbit_samples));
+  return c;
+}
+
 }  // namespace pneumachaos

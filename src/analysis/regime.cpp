@@ -216,6 +216,11 @@ bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
   return e.last_half_std <= o.steady_variation * std::max(std::abs(e.last_half_mean), e.range);
 }
 
+bool rests_like_stick_slip(const RegimeEvidence& e, const VerdictOptions& o) {
+  return e.rests_judged && e.rest_intervals >= o.min_rest_intervals &&
+         e.rest_share >= o.min_rest_share;
+}
+
 Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   Verdict v;
   Notes note(v);
@@ -227,7 +232,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   Criteria c;
   if (e.rests_judged) {
     v.stick_slip =
-        note(e.rest_intervals >= o.min_rest_intervals && e.rest_share >= o.min_rest_share,
+        note(rests_like_stick_slip(e, o),
              fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x "
                          "max|x| (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
                          e.rest_intervals, o.min_rest_samples, o.rest_fraction,

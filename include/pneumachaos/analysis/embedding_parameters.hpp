@@ -19,13 +19,20 @@ std::vector<double> mutual_information(std::span<const double> x, std::size_t ma
 
 struct DelayChoice {
   std::size_t delay = 1;
-  std::string method;       ///< "mutual-information minimum" or "autocorrelation 1/e" (fallback)
+  /// "mutual-information minimum", "autocorrelation 1/e" (fallback), or, from
+  /// delay_within_an_orbit, "a quarter of the orbit (...)"
+  std::string method;
   std::vector<double> ami;  ///< I(tau) as far as it was computed
 };
 
 /// First local minimum of I(tau) (searched up to N/10 lags); falls back to the lag where the
 /// autocorrelation drops below 1/e when I(tau) has no minimum.
 DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag = 0);
+
+/// `c`, unless its delay is an orbit (`orbit_samples`, e.g. the mean spacing of the maxima)
+/// or more: then a quarter of the orbit, where the first minimum of an oscillation's I lies,
+/// with `method` saying so. Orbits under 8 samples (maps, noise) leave `c` as it is.
+DelayChoice delay_within_an_orbit(DelayChoice c, double orbit_samples);
 
 struct DimensionChoice {
   std::size_t dimension = 2;

@@ -112,4 +112,8 @@ std::string verdict_rule(const VerdictOptions& o = {});
 /// analysis stops before the embedding and the Lyapunov estimators.
 bool is_steady(const RegimeEvidence& e, const VerdictOptions& o = {});
 
+/// Whether the record rests often and long enough for stick-slip (VerdictOptions'
+/// min_rest_intervals and min_rest_share); false where rests are not judged.
+bool rests_like_stick_slip(const RegimeEvidence& e, const VerdictOptions& o = {});
+
 }  // namespace pneumachaos
