@@ -170,7 +170,8 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
   r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
   // The orbit is the oscillation's; a record that rests between slips has none to speak of
   // (its maxima are the slips), and there the cap turned the rig's stick-slip records chaotic
-  // against the model's own exponent (docs/notes/analysis.md, "Tried and not adopted").
+  // against the model's own exponent (docs/notes/exponent_validation.md, "The delay within an
+  // orbit").
   if (o.delay == 0 && !rests_like_stick_slip(r.evidence, o.verdict))
     r.delay = delay_within_an_orbit(r.delay, r.period_samples);
   const std::size_t tau = r.delay.delay;
