@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <nlohmann/json.hpp>
 
+#include "claim_front.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
@@ -51,8 +53,31 @@ nlohmann::json claims_rows(const std::vector<ScoredClaim>& rows) {
   return a;
 }
 
+nlohmann::json front_json(const ClaimFront& f) {
+  nlohmann::json j;
+  j["accepted_evaluations"] = f.accepted;
+  for (const ClaimReach& r : f.reach)
+    j["claims"].push_back({{"id", r.id}, {"agreed_at", r.agreed}, {"judged_at", r.evaluated},
+                           {"best_margin", margin_json(r.best_margin)},
+                           {"best_evaluation", std::isnan(r.best_margin)
+                                                   ? nlohmann::json()
+                                                   : nlohmann::json(r.best_evaluation)}});
+  j["front"] = nlohmann::json::array();
+  for (const AgreedSet& s : f.front) {
+    nlohmann::json ids = nlohmann::json::array();
+    for (const std::size_t i : s.claims) ids.push_back(f.ids[i]);
+    j["front"].push_back({{"claims", ids}, {"evaluations", s.evaluations}, {"best", s.example}});
+  }
+  j["conflicts"] = nlohmann::json::array();
+  for (const ClaimConflict& c : f.conflicts)
+    j["conflicts"].push_back({{"claims", {f.ids[c.a], f.ids[c.b]}},
+                              {"margin_correlation", margin_json(c.correlation)}});
+  return j;
+}
+
 std::string calibration_json(const CalibrationSpec& spec, const CalibrationResult& r,
-                             const std::vector<std::string>& terms) {
+                             const std::vector<std::string>& terms,
+                             const std::optional<ClaimFront>& front) {
   nlohmann::json j;
   j["spec"] = spec.path;
   j["algorithm"] = spec.optimizer.algorithm;
@@ -67,6 +92,7 @@ std::string calibration_json(const CalibrationSpec& spec, const CalibrationResul
   j["fitted"] = claims_rows(r.fitted);
   j["predicted"] = claims_rows(r.predicted);
   for (std::size_t i = 0; i < r.map_errors.size(); ++i) j["map_errors"][terms[i]] = margin_json(r.map_errors[i]);
+  if (front) j["evaluations_together"] = front_json(*front);
   return j.dump(2) + "\n";
 }
 
@@ -79,7 +105,8 @@ std::string claims_table_md(const std::vector<ScoredClaim>& rows) {
   return out;
 }
 
-std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r) {
+std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r,
+                       const std::optional<ClaimFront>& front) {
   std::string out = fmt::format(
       "# Calibration: {}\n\n{} ({} population, seed {}): {} evaluations; the best is evaluation "
       "{} with objective {:.4f} (the weighted mean of -tanh(margin), -1 best, +1 worst).\n\n"
@@ -96,6 +123,7 @@ std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r) 
                        i ? "chaos" : "stick-slip", r.map_errors[i]);
   out += "\n## Predicted (out of sample: judged only at the best point)\n\n" +
          (r.predicted.empty() ? std::string("none asked\n") : claims_table_md(r.predicted));
+  if (front) out += "\n" + claim_front_md(*front);
   return out;
 }
 
@@ -157,6 +185,9 @@ void write_calibration_outputs(const CalibrationSpec& spec, const OptimizerTrace
                                const std::vector<std::string>& terms, const CalibrationResult& r,
                                const std::string& out_dir) {
   render_figure(convergence_figure(entries, spec.optimizer.population), out_dir + "/figures");
+  // Only a claims objective has claim margins as its terms.
+  std::optional<ClaimFront> front;
+  if (spec.objective.kind == ObjectiveKind::kClaims) front = claim_front(terms, entries);
   OutputSet out;
   out.add(out_dir + "/evaluations.csv") << evaluations_csv(spec, entries, terms);
   out.add(out_dir + "/best_scenario.toml")
@@ -164,8 +195,8 @@ void write_calibration_outputs(const CalibrationSpec& spec, const OptimizerTrace
                      spec.path, r.best, r.evaluations, exact_text(r.best_objective))
       << scenario_to_toml(spec.scenario_at(trace.u[trace.best]));
   out.add(out_dir + "/claims.json") << claims_json(r.all_claims);
-  out.add(out_dir + "/calibration.json") << calibration_json(spec, r, terms);
-  out.add(out_dir + "/summary.md") << summary_md(spec, r);
+  out.add(out_dir + "/calibration.json") << calibration_json(spec, r, terms, front);
+  out.add(out_dir + "/summary.md") << summary_md(spec, r, front);
   out.commit();
 }
 
