@@ -75,8 +75,21 @@ std::string claims_table(const std::vector<Claim>& claims) {
 
 }  // namespace
 
+namespace {
+
+// A rig of the user's: the page says which, and that the built-in rig's account does not apply.
+std::string users_rig(const std::string& source) {
+  return "<h2>The rig</h2>\n<p>This report runs <b>" + escape(source) +
+         "</b>, not the built-in virtual rig, under the paper's conditions (the supply pressure "
+         "and the total moving mass of each figure); Fig. 2 uses the paper's own model. The "
+         "full scenario is at the end of this page.</p>\n";
+}
+
+}  // namespace
+
 std::string report_html(const std::vector<FigureFiles>& figures, const std::vector<Claim>& claims,
-                        const std::string& scenario_toml, const std::string& settings) {
+                        const std::string& scenario_toml, const std::string& settings,
+                        const std::string& rig_source) {
   const std::string headline = claims_headline(count_claims(claims));
   std::string h =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
@@ -92,11 +105,13 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "the claims tested &mdash; " +
       escape(headline.substr(0, headline.find(" ("))) +
       "</h1>\n<p><b>" + escape(headline) +
-      ".</b> Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from its "
-      "built-in virtual rig; each claim quotes the paper, says how we read it and is judged by a "
+      ".</b> Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
+      (rig_source.empty() ? std::string("its built-in virtual rig") : escape(rig_source)) +
+      "; each claim quotes the paper, says how we read it and is judged by a "
       "stated rule with a signed margin (&ge; 0 passes; <code>claims.json</code> holds the same "
       "table). " +
-      escape(settings) + "</p>\n" + kVirtualRig +
+      escape(settings) + "</p>\n" +
+      (rig_source.empty() ? std::string(kVirtualRig) : users_rig(rig_source)) +
       "<h2>The paper's claims against our numbers</h2>\n<p>The paper contradicts itself on the "
       "stick-slip region under a higher supply pressure (a decrease of about 20 % and, two "
       "sentences later, an extension): that row shows both sentences and is not scored; the "

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "pneumachaos/core/error.hpp"
@@ -37,6 +39,24 @@ void check_out_dir(const std::string& dir) {
   throw Error(dir,
               "exists and is not an earlier report (no index.html, figures/ or sweeps/); "
               "choose a new or empty directory");
+}
+
+// A report directory holds one rig's report at one grid: the first run writes what it runs
+// into rig.toml, and a run of another rig or grid is refused there, before any figure of the
+// report in it is overwritten (its sweeps could not be resumed anyway).
+void claim_out_dir(const std::string& dir, const std::string& identity) {
+  const std::string path = dir + "/rig.toml";
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string held((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (held == identity) return;
+    throw Error(path, "this directory holds the report of another rig or grid (the rig and "
+                      "options it ran are in this file): choose a new --out");
+  }
+  AtomicFile f(path);
+  f.stream() << identity;
+  f.commit();
 }
 
 SimulationResult run(Scenario s, double duration_s) {
@@ -165,9 +185,16 @@ class ReportBuilder {
   explicit ReportBuilder(const ReproduceOptions& o)
       : o_(o),
         fig_dir_(o.out_dir + "/figures"),
-        base_(paper_conditions(default_scenario())),
+        base_(paper_conditions(o.rig ? *o.rig : default_scenario())),
         spec_(map_spec(base_, o.quick, o.full_maps)),
         stage_(o.progress, 9, 4 * spec_.runs()) {}
+
+  // What this report runs, as rig.toml holds it.
+  [[nodiscard]] std::string identity() const {
+    return fmt::format("# pneumachaos reproduce{}: the rig under the Fig. 4 conditions\n",
+                       o_.quick ? " --quick" : "") +
+           scenario_to_toml(base_);
+  }
 
   // Fig. 2: the paper's own model in both circuits, at three valve openings each, under the
   // assumptions of its Sections 3.2 and 3.3.
@@ -269,8 +296,9 @@ class ReportBuilder {
     result_.claims = evaluate_claims(claims_);
     write_file(o_.out_dir + "/claims.json", claims_json(result_.claims));
     result_.index_html = o_.out_dir + "/index.html";
-    write_file(result_.index_html, report_html(result_.figures, result_.claims,
-                                               scenario_to_toml(spec_.base), settings()));
+    write_file(result_.index_html,
+               report_html(result_.figures, result_.claims, scenario_to_toml(spec_.base),
+                           settings(), o_.rig ? o_.rig_source : std::string()));
     return result_;
   }
 
@@ -343,6 +371,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   std::filesystem::create_directories(o.out_dir + "/figures", ec);
   if (ec) throw Error(o.out_dir, "cannot create the report directory: " + ec.message());
   ReportBuilder report(o);
+  claim_out_dir(o.out_dir, report.identity());
   report.time_responses();
   report.chaotic_example();
   report.friction_loops();

@@ -1,10 +1,12 @@
 #pragma once
-// `reproduce`: the paper's figures and claims from built-in defaults, as a self-contained
-// HTML report with every figure's data and gnuplot script beside it.
+// `reproduce`: the paper's figures and claims from built-in defaults (or a rig of the user's),
+// as a self-contained HTML report with every figure's data and gnuplot script beside it.
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/report/claims.hpp"
 #include "pneumachaos/report/figure.hpp"
 
@@ -12,6 +14,12 @@ namespace pneumachaos {
 
 struct ReproduceOptions {
   std::string out_dir = "report";
+  /// The rig the maps, Figs. 3 and 7 and the linear trends run on, under the paper's
+  /// conditions (Ps and the total moving mass set per figure); none: the built-in virtual rig.
+  /// Fig. 2 always runs the paper's own model.
+  std::optional<Scenario> rig;
+  /// How the page names that rig (a file and its overrides); used only with `rig`.
+  std::string rig_source;
   /// A coarse grid (6 x 7 points, 2 repeats, 5 s records) and shorter averages: the whole
   /// report in well under a minute. Full: the paper's grids, 5 repeats, 10 s records.
   bool quick = false;
@@ -35,7 +43,10 @@ struct ReproduceResult {
 ReproduceResult reproduce(const ReproduceOptions& options);
 
 /// The HTML page for a set of figures and claims (relative links into figures/).
+/// `rig_source`: empty for the built-in virtual rig (the page explains it), else how the
+/// user's rig was given.
 std::string report_html(const std::vector<FigureFiles>& figures, const std::vector<Claim>& claims,
-                        const std::string& scenario_toml, const std::string& settings);
+                        const std::string& scenario_toml, const std::string& settings,
+                        const std::string& rig_source = "");
 
 }  // namespace pneumachaos
