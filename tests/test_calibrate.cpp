@@ -110,6 +110,22 @@ TEST(CalibrationSpec, RefusesInconsistentObjectivesAndOptimizers) {
   EXPECT_NE(refusal(kFree + kObjective + "[objective.grid]\n").find("spec.toml:"), std::string::npos);
 }
 
+// fig4_s1_above_s2 compares points with S1 > S2 against points with S1 <= S2: reproduce
+// --quick's grid (S2 up to 0.95, S1 from 2.45 mm^2) has none of the second kind, so the claim
+// could never be scored there; the paper's S2 axis (to 4.40 mm^2) has both.
+TEST(CalibrationSpec, RefusesAClaimTheGridCannotScore) {
+  const auto spec = [](const std::string& s2_axis) {
+    return kFree +
+           "[objective]\nkind = \"claims\"\nmaps = [ { role = \"base\", Ps_MPa = 0.25, m_kg = 1.5 } ]\n"
+           "grid = [\"circuit.S1_mm2=2.45:3.70:0.25\", \"" + s2_axis + "\"]\n"
+           "claims = { fig4_s1_above_s2 = 1 }\n";
+  };
+  const std::string msg = refusal(spec("circuit.S2_mm2=0.05:0.95:0.15"));
+  EXPECT_NE(msg.find("fig4_s1_above_s2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("every point of the grid has S1 > S2"), std::string::npos) << msg;
+  EXPECT_EQ(refusal(spec("circuit.S2_mm2=0.05:4.40:0.60")), "");
+}
+
 // A shifted ellipsoid in 3 dimensions with its minimum at a known point inside the box: the
 // optimizer must find it to 1e-3 (CMA-ES converges linearly on it; Hansen's tutorial,
 // arXiv:1604.00772, reports ~1e3 evaluations to 1e-8 at n = 3).

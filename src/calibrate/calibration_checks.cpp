@@ -71,6 +71,11 @@ void CalibrationSpec::validate() const {
   if (!all.maps.empty() && objective.maps.axes.empty())
     throw Error(path + ": objective.grid", "the maps need grid = [\"circuit.S1_mm2=...\", "
                                            "\"circuit.S2_mm2=...\"]");
+  for (const auto* claims : {&objective.fit.claims, &predict.claims})
+    for (const ClaimWeight& c : *claims) {
+      const std::string problem = detail::grid_problem_for_claim(c.id, objective.maps.axes);
+      if (!problem.empty()) throw Error(c.where, "the maps' grid cannot score this claim: " + problem);
+    }
   try {
     scenario_at(std::vector<double>(free.size(), 0.5)).validate();
   } catch (const Error& e) {

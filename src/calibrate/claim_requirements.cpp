@@ -62,6 +62,30 @@ std::string missing_for_claim(const std::string& id, const ConditionSet& c) {
   return "";
 }
 
+std::string grid_problem_for_claim(const std::string& id, const std::vector<GridAxis>& axes) {
+  if (id != "fig4_s1_above_s2") return "";
+  const auto axis = [&](const char* key) {
+    const auto it = std::find_if(axes.begin(), axes.end(),
+                                 [&](const GridAxis& a) { return a.key == key; });
+    return it == axes.end() ? nullptr : &*it;
+  };
+  const GridAxis* s1 = axis("circuit.S1_mm2");
+  const GridAxis* s2 = axis("circuit.S2_mm2");
+  if (s1 == nullptr || s2 == nullptr || s1->values.empty() || s2->values.empty()) return "";
+  const auto [s1_lo, s1_hi] = std::minmax_element(s1->values.begin(), s1->values.end());
+  const auto [s2_lo, s2_hi] = std::minmax_element(s2->values.begin(), s2->values.end());
+  if (*s2_hi < *s1_lo)
+    return fmt::format("it compares S1 > S2 with S1 <= S2, and every point of the grid has S1 > "
+                       "S2 (S2 up to {:g}, S1 from {:g} mm^2): extend circuit.S2_mm2 to S1's "
+                       "values, or leave the claim out",
+                       *s2_hi, *s1_lo);
+  if (*s1_hi <= *s2_lo)
+    return fmt::format("it compares S1 > S2 with S1 <= S2, and no point of the grid has S1 > S2 "
+                       "(S1 up to {:g}, S2 from {:g} mm^2)",
+                       *s1_hi, *s2_lo);
+  return "";
+}
+
 std::string stable_hash(const std::string& text) {
   std::uint64_t h = 14695981039346656037ULL;
   for (unsigned char ch : text) {
