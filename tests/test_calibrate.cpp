@@ -88,8 +88,8 @@ TEST(CalibrationSpec, RefusesABoundOutsideThePlausibleRange) {
 }
 
 TEST(CalibrationSpec, RefusesInconsistentObjectivesAndOptimizers) {
-  // A claim the conditions cannot score, a prediction that is fitted, an unknown claim, the
-  // records objective (not supported yet), a typo'd key, a population pagmo cannot run.
+  // A claim the conditions cannot score, a prediction that is fitted, an unknown claim, a
+  // records objective without records, a typo'd key, a population pagmo cannot run.
   EXPECT_NE(refusal(kFree + "[objective]\nkind = \"claims\"\nclaims = { fig7_spectrum = 1 }\n")
                 .find("needs example = true"),
             std::string::npos);
@@ -99,7 +99,7 @@ TEST(CalibrationSpec, RefusesInconsistentObjectivesAndOptimizers) {
   EXPECT_NE(refusal(kFree + "[objective]\nkind = \"claims\"\nexample = true\nclaims = { fig9 = 1 }\n")
                 .find("spec.toml:9:"),
             std::string::npos);
-  EXPECT_NE(refusal(kFree + "[objective]\nkind = \"records\"\n").find("not supported yet"),
+  EXPECT_NE(refusal(kFree + "[objective]\nkind = \"records\"\n").find("needs records = ["),
             std::string::npos);
   EXPECT_NE(refusal(kFree + kObjective + "exampel_record_s = 3\n").find("objective.exampel_record_s"),
             std::string::npos);

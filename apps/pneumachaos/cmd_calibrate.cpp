@@ -21,10 +21,15 @@ void print_result(const CalibrationResult& r, const std::string& out) {
     for (const ScoredClaim& s : rows) n += s.claim.verdict == kAgrees ? 1 : 0;
     return n;
   };
-  fmt::print("calibrate: {} evaluations; best: evaluation {}, objective {:.4f}; fitted claims "
-             "agreeing {} of {}, predicted {} of {}; results in {}\n",
-             r.evaluations, r.best, r.best_objective, agreeing(r.fitted), r.fitted.size(),
-             agreeing(r.predicted), r.predicted.size(), out);
+  std::string fitted = fmt::format("fitted claims agreeing {} of {}", agreeing(r.fitted), r.fitted.size());
+  if (!r.record_errors.empty()) {
+    fitted = "record errors";
+    for (const double e : r.record_errors) fitted += fmt::format(" {:.4g}", e);
+  }
+  fmt::print("calibrate: {} evaluations; best: evaluation {}, objective {:.4f}; {}, predicted {} "
+             "of {}; results in {}\n",
+             r.evaluations, r.best, r.best_objective, fitted, agreeing(r.predicted),
+             r.predicted.size(), out);
 }
 
 }  // namespace
@@ -33,8 +38,9 @@ Action add_calibrate(CLI::App& app) {
   auto a = std::make_shared<CalibrateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "calibrate",
-      "Fit a spec's free scenario keys (each bound with its source) to the paper's claims or a "
-      "measured incidence map with pagmo2's CMA-ES; journalled and resumable");
+      "Fit a spec's free scenario keys (each bound with its source) to the paper's claims, a "
+      "measured incidence map or measured records with pagmo2's CMA-ES; journalled and "
+      "resumable");
   cmd->add_option("spec", a->spec, "the calibration spec (TOML; docs/guide/calibrate.md)")
       ->required()
       ->check(CLI::ExistingFile);

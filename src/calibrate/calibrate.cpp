@@ -17,6 +17,7 @@
 #include "evaluator.hpp"
 #include "calibrate/optimizer.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 
 namespace pneumachaos {
@@ -103,6 +104,17 @@ std::string measured_text_hash(const std::string& path) {
   return detail::stable_hash(ss.str());
 }
 
+// The measured records of a records objective, read once (their errors name file:line), in
+// the units and absolute pressures the fit uses; the [fixed] scenario gives the ambient
+// pressure for gauge columns and the stroke for the travel check.
+std::vector<identify::MeasuredRecord> read_records(const CalibrationSpec& spec) {
+  std::vector<identify::MeasuredRecord> out;
+  for (const RecordCondition& r : spec.objective.records)
+    out.push_back(identify::read_measured_record(r.file, identify::RecordColumns{},
+                                                 identify::read_options_for(spec.base)));
+  return out;
+}
+
 }  // namespace
 
 void CalibrateOptions::validate() const {
@@ -119,16 +131,18 @@ CalibrationResult calibrate(const CalibrationSpec& spec, const CalibrateOptions&
   std::optional<MeasuredMap> measured;
   if (spec.objective.kind == ObjectiveKind::kIncidenceMap)
     measured = read_measured_map(spec.objective.measured_map);
+  std::vector<identify::MeasuredRecord> records = read_records(spec);
   // Under MPI every rank has looked at --out before any rank creates something in it.
   detail::Distribution::instance().barrier();
   std::error_code ec;
   fs::create_directories(o.out_dir + "/sweeps", ec);
   if (ec) throw RunError(o.out_dir, "cannot create the calibration directory: " + ec.message());
-  detail::Evaluator ev(spec, {o.threads, 1}, measured);
+  detail::Evaluator ev(spec, {o.threads, 1}, measured, std::move(records));
   const std::vector<std::string> terms = ev.term_names();
-  detail::EvaluationJournal journal(
-      o.out_dir + "/journal.csv", spec.fingerprint() + measured_text_hash(spec.objective.measured_map),
-      spec.free.size(), terms.size(), detail::is_writer_rank());
+  std::string inputs = measured_text_hash(spec.objective.measured_map);
+  for (const RecordCondition& r : spec.objective.records) inputs += measured_text_hash(r.file);
+  detail::EvaluationJournal journal(o.out_dir + "/journal.csv", spec.fingerprint() + inputs,
+                                    spec.free.size(), terms.size(), detail::is_writer_rank());
   // Every rank has read the journal before the writer appends to it.
   detail::Distribution::instance().barrier();
   Loop loop(spec, o, ev, journal);

@@ -16,6 +16,25 @@ namespace {
 const std::set<std::string> kSetByConditions = {"supply.pressure_MPa", "load.mass_kg",
                                                 "circuit.S1_mm2", "circuit.S2_mm2"};
 
+// Whether a record sets the scenario key `key` (one of kSetByConditions).
+bool a_record_sets(const std::vector<RecordCondition>& records, const std::string& key) {
+  for (const RecordCondition& r : records) {
+    if ((key == "circuit.S1_mm2" && r.S1_mm2) || (key == "circuit.S2_mm2" && r.S2_mm2) ||
+        (key == "supply.pressure_MPa" && r.Ps_MPa) || (key == "load.mass_kg" && r.m_kg))
+      return true;
+  }
+  return false;
+}
+
+// The conditions' keys cannot be free where the conditions set them: the maps always do
+// (Ps, m and the grid's S1, S2); a records objective only where a record names them, so the
+// valve areas of a rig can be fitted to its records.
+bool set_by_conditions(const CalibrationSpec& spec, const std::string& key) {
+  if (kSetByConditions.count(key) == 0) return false;
+  if (spec.objective.kind != ObjectiveKind::kRecords || !spec.predict.maps.empty()) return true;
+  return a_record_sets(spec.objective.records, key);
+}
+
 void check_roles(const ConditionSet& c, std::set<std::string>& roles) {
   for (const MapCondition& m : c.maps)
     if (!roles.insert(m.role).second)
@@ -51,9 +70,10 @@ void CalibrationSpec::validate() const {
   std::set<std::string> keys;
   for (const FreeParameter& p : free) {
     if (!keys.insert(p.key).second) throw Error(p.where + " " + p.key, "this key is free twice");
-    if (kSetByConditions.count(p.key) != 0)
+    if (set_by_conditions(*this, p.key))
       throw Error(p.where + " " + p.key,
-                  "this key is set by the conditions (the maps' Ps and m, the grid's S1 and S2)");
+                  "this key is set by the conditions (the maps' Ps and m, the grid's S1 and "
+                  "S2, or a record's)");
   }
   optimizer.validate();
   std::set<std::string> roles;
@@ -105,6 +125,13 @@ std::string CalibrationSpec::fingerprint() const {
     s += ";";
   }
   s += o.measured_map + ";" + conditions_text(o.fit) + "predict;" + conditions_text(predict);
+  const auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{}", *v) : "-"; };
+  for (const RecordCondition& r : o.records)
+    s += fmt::format("record {} {} {} {} {} {};", r.file, opt(r.S1_mm2), opt(r.S2_mm2),
+                     opt(r.Ps_MPa), opt(r.m_kg), opt(r.x0_mm));
+  if (o.kind == ObjectiveKind::kRecords)
+    s += fmt::format("records {} {} {};", o.segment_s, o.pressure_scale_kPa,
+                     o.velocity_scale_mm_per_s);
   s += fmt::format("optimizer {} {} {} {} {};", optimizer.algorithm, optimizer.population,
                    optimizer.max_evaluations, optimizer.seed, optimizer.sigma0);
   return detail::stable_hash(s);

@@ -92,6 +92,9 @@ std::string calibration_json(const CalibrationSpec& spec, const CalibrationResul
   j["fitted"] = claims_rows(r.fitted);
   j["predicted"] = claims_rows(r.predicted);
   for (std::size_t i = 0; i < r.map_errors.size(); ++i) j["map_errors"][terms[i]] = margin_json(r.map_errors[i]);
+  for (std::size_t i = 0; i < r.record_errors.size(); ++i)
+    j["record_errors"].push_back({{"file", spec.objective.records[i].file},
+                                  {"error", margin_json(r.record_errors[i])}});
   if (front) j["evaluations_together"] = front_json(*front);
   return j.dump(2) + "\n";
 }
@@ -105,14 +108,24 @@ std::string claims_table_md(const std::vector<ScoredClaim>& rows) {
   return out;
 }
 
+std::string objective_meaning(ObjectiveKind kind) {
+  switch (kind) {
+    case ObjectiveKind::kClaims: return "the weighted mean of -tanh(margin), -1 best, +1 worst";
+    case ObjectiveKind::kIncidenceMap:
+      return "the weighted mean of the incidences' RMS errors, 0 best, 1 worst";
+    case ObjectiveKind::kRecords: return "the mean of e / (1 + e) over the records' errors e, 0 best, 1 worst";
+  }
+  return "";
+}
+
 std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r,
                        const std::optional<ClaimFront>& front) {
   std::string out = fmt::format(
       "# Calibration: {}\n\n{} ({} population, seed {}): {} evaluations; the best is evaluation "
-      "{} with objective {:.4f} (the weighted mean of -tanh(margin), -1 best, +1 worst).\n\n"
+      "{} with objective {:.4f} ({}).\n\n"
       "## Best point\n\n| key | value | bounds | source |\n|---|---|---|---|\n",
       spec.path, spec.optimizer.algorithm, spec.optimizer.population, spec.optimizer.seed,
-      r.evaluations, r.best, r.best_objective);
+      r.evaluations, r.best, r.best_objective, objective_meaning(spec.objective.kind));
   for (std::size_t i = 0; i < spec.free.size(); ++i)
     out += fmt::format("| {} | {:.6g} | {:g} to {:g}{} | {} |\n", spec.free[i].key,
                        r.best_values[i], spec.free[i].lower, spec.free[i].upper,
@@ -121,6 +134,13 @@ std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r,
   for (std::size_t i = 0; i < r.map_errors.size(); ++i)
     out += fmt::format("{}RMS incidence error ({}): {:.4f}\n", i ? "" : "\n",
                        i ? "chaos" : "stick-slip", r.map_errors[i]);
+  if (!r.record_errors.empty()) {
+    out += "\n| measured record | error (RMS of the scaled residuals of P1, P2, v) |\n|---|---|\n";
+    for (std::size_t i = 0; i < r.record_errors.size(); ++i)
+      out += fmt::format("| {} | {} |\n", spec.objective.records[i].file,
+                         std::isnan(r.record_errors[i]) ? std::string("failed")
+                                                        : fmt::format("{:.4g}", r.record_errors[i]));
+  }
   out += "\n## Predicted (out of sample: judged only at the best point)\n\n" +
          (r.predicted.empty() ? std::string("none asked\n") : claims_table_md(r.predicted));
   if (front) out += "\n" + claim_front_md(*front);
@@ -157,6 +177,7 @@ CalibrationResult best_point_result(const CalibrationSpec& spec, const Optimizer
   const std::vector<double>& u = trace.u[trace.best];
   for (std::size_t i = 0; i < spec.free.size(); ++i) r.best_values.push_back(spec.free[i].value(u[i]));
   if (spec.objective.kind == ObjectiveKind::kIncidenceMap) r.map_errors = entries[trace.best].terms;
+  if (spec.objective.kind == ObjectiveKind::kRecords) r.record_errors = entries[trace.best].terms;
   ConditionSet all = spec.objective.fit;
   all.example = all.example || spec.predict.example;
   all.maps.insert(all.maps.end(), spec.predict.maps.begin(), spec.predict.maps.end());

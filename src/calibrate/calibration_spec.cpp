@@ -239,18 +239,77 @@ MapSettings read_map_settings(Table& r) {
   return m;
 }
 
+std::string relative_to(const std::string& dir, const std::string& file) {
+  return (file.front() == '/' || dir.empty()) ? file : dir + "/" + file;
+}
+
+// A condition of a record, checked as the scenario key it sets.
+std::optional<double> record_setting(Table& m, const char* name, const char* key) {
+  const std::optional<double> v = m.number(name);
+  if (v && key != nullptr) {
+    Scenario scratch = default_scenario();
+    apply_setting(scratch, key, *v, m.where(name));
+  }
+  return v;
+}
+
+std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
+  std::vector<RecordCondition> out;
+  const toml::node* n = r.get("records");
+  const auto* a = n != nullptr ? n->as_array() : nullptr;
+  if (a == nullptr || a->empty())
+    throw Error(r.where("records"), "needs records = [ { file = \"run.csv\", S1_mm2 = ..., "
+                                    "S2_mm2 = ..., Ps_MPa = ..., m_kg = ... }, ... ]");
+  for (const toml::node& item : *a) {
+    const auto* t = item.as_table();
+    if (t == nullptr) throw Error(at(r.origin(), item, "records"), "expected { file = \"...\", ... }");
+    Table m(*t, r.origin(), "records.");
+    RecordCondition c;
+    c.where = at(r.origin(), item, "records");
+    const auto file = m.text("file");
+    if (!file || file->empty()) throw Error(m.where("file"), "needs file = \"run.csv\"");
+    c.file = relative_to(dir, *file);
+    c.S1_mm2 = record_setting(m, "S1_mm2", "circuit.S1_mm2");
+    c.S2_mm2 = record_setting(m, "S2_mm2", "circuit.S2_mm2");
+    c.Ps_MPa = record_setting(m, "Ps_MPa", "supply.pressure_MPa");
+    c.m_kg = record_setting(m, "m_kg", nullptr);
+    if (c.m_kg && (!(*c.m_kg > 0.0) || *c.m_kg > 1000.0))
+      throw Error(m.where("m_kg"), "expected 0 < m_kg <= 1000");
+    c.x0_mm = record_setting(m, "x0_mm", nullptr);
+    if (c.x0_mm && !(*c.x0_mm >= 0.0 && *c.x0_mm <= 10000.0))
+      throw Error(m.where("x0_mm"), "expected 0 <= x0_mm <= 10000");
+    m.no_other_keys();
+    out.push_back(c);
+  }
+  return out;
+}
+
+void read_record_settings(Table& r, ObjectiveSpec& o, const std::string& dir) {
+  o.records = read_records(r, dir);
+  o.segment_s = r.number_or("segment_s", o.segment_s);
+  if (!(o.segment_s >= 0.005 && o.segment_s <= 10.0))
+    throw Error(r.where("segment_s"), "expected 0.005 <= segment_s <= 10");
+  o.pressure_scale_kPa = r.number_or("pressure_scale_kPa", o.pressure_scale_kPa);
+  if (!(o.pressure_scale_kPa > 0.0 && o.pressure_scale_kPa <= 1000.0))
+    throw Error(r.where("pressure_scale_kPa"), "expected 0 < pressure_scale_kPa <= 1000");
+  o.velocity_scale_mm_per_s = r.number_or("velocity_scale_mm_per_s", o.velocity_scale_mm_per_s);
+  if (!(o.velocity_scale_mm_per_s > 0.0 && o.velocity_scale_mm_per_s <= 10000.0))
+    throw Error(r.where("velocity_scale_mm_per_s"), "expected 0 < velocity_scale_mm_per_s <= 10000");
+}
+
 ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, const std::string& dir) {
   Table r(t, origin, "objective.");
   ObjectiveSpec o;
   const std::string kind = r.text("kind").value_or("");
-  if (kind == "records")
-    throw Error(r.where("kind"), "kind = \"records\" (measured records through fit) is not "
-                                 "supported yet; use \"claims\" or \"incidence_map\"");
-  if (kind != "claims" && kind != "incidence_map")
-    throw Error(r.where("kind"), "expected kind = \"claims\" or \"incidence_map\"");
-  o.kind = kind == "claims" ? ObjectiveKind::kClaims : ObjectiveKind::kIncidenceMap;
+  if (kind != "claims" && kind != "incidence_map" && kind != "records")
+    throw Error(r.where("kind"), "expected kind = \"claims\", \"incidence_map\" or \"records\"");
+  o.kind = kind == "claims"          ? ObjectiveKind::kClaims
+           : kind == "incidence_map" ? ObjectiveKind::kIncidenceMap
+                                     : ObjectiveKind::kRecords;
   o.maps = read_map_settings(r);
-  if (o.kind == ObjectiveKind::kClaims) {
+  if (o.kind == ObjectiveKind::kRecords) {
+    read_record_settings(r, o, dir);
+  } else if (o.kind == ObjectiveKind::kClaims) {
     o.fit = read_conditions(r);
     o.example_record_s = r.number_or("example_record_s", o.example_record_s);
     if (!(o.example_record_s > kExampleSettle_s) || o.example_record_s > 3600.0)
@@ -260,7 +319,7 @@ ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, co
   } else {
     const auto file = r.text("file");
     if (!file || file->empty()) throw Error(r.where("file"), "needs file = \"measured_map.csv\"");
-    o.measured_map = (file->front() == '/' || dir.empty()) ? *file : dir + "/" + *file;
+    o.measured_map = relative_to(dir, *file);
     o.stick_slip_weight = r.number_or("stick_slip_weight", 1.0);
     o.chaos_weight = r.number_or("chaos_weight", 1.0);
     if (!(o.stick_slip_weight >= 0.0) || !(o.chaos_weight >= 0.0) ||

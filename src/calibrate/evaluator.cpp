@@ -1,9 +1,12 @@
 #include "evaluator.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "pneumachaos/calibrate/calibrate.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/model/scenario_keys.hpp"
 
 namespace pneumachaos {
 
@@ -21,12 +24,31 @@ double claims_objective(const std::vector<double>& margins, const std::vector<do
 namespace detail {
 
 Evaluator::Evaluator(const CalibrationSpec& spec, RunSettings settings,
-                     std::optional<MeasuredMap> measured)
-    : spec_(spec), settings_(settings), measured_(std::move(measured)) {}
+                     std::optional<MeasuredMap> measured,
+                     std::vector<identify::MeasuredRecord> records)
+    : spec_(spec), settings_(settings), measured_(std::move(measured)),
+      records_(std::move(records)) {}
+
+double scaled_record_error(const identify::ValidationSeries& v, double pressure_scale_Pa,
+                           double velocity_scale_m_per_s) {
+  const auto sq = [](double a, double b, double scale) { return std::pow((a - b) / scale, 2); };
+  double sum = 0.0;
+  for (std::size_t i = 0; i < v.t_s.size(); ++i)
+    sum += sq(v.p1_sim[i], v.p1_meas[i], pressure_scale_Pa) +
+           sq(v.p2_sim[i], v.p2_meas[i], pressure_scale_Pa) +
+           sq(v.v_sim[i], v.v_meas[i], velocity_scale_m_per_s);
+  return v.t_s.empty() ? kNaN : std::sqrt(sum / (3.0 * static_cast<double>(v.t_s.size())));
+}
 
 std::vector<std::string> Evaluator::term_names() const {
   if (spec_.objective.kind == ObjectiveKind::kIncidenceMap)
     return {"stick_slip_rms_error", "chaos_rms_error"};
+  if (spec_.objective.kind == ObjectiveKind::kRecords) {
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < spec_.objective.records.size(); ++k)
+      names.push_back(fmt::format("record_{}_error", k + 1));
+    return names;
+  }
   std::vector<std::string> names;
   for (const ClaimWeight& c : spec_.objective.fit.claims) names.push_back(c.id);
   return names;
@@ -61,6 +83,48 @@ Evaluation Evaluator::map_errors(const Scenario& s, const std::string& dir) cons
   return e;
 }
 
+namespace {
+
+// The record's conditions on the evaluated scenario, as a map condition sets them.
+Scenario at_record_conditions(Scenario s, const RecordCondition& c) {
+  if (c.S1_mm2) apply_setting(s, "circuit.S1_mm2", *c.S1_mm2, c.where);
+  if (c.S2_mm2) apply_setting(s, "circuit.S2_mm2", *c.S2_mm2, c.where);
+  if (c.Ps_MPa) apply_setting(s, "supply.pressure_MPa", *c.Ps_MPa, c.where);
+  if (c.m_kg) s.set_total_moving_mass(*c.m_kg);
+  s.validate();
+  return s;
+}
+
+}  // namespace
+
+Evaluation Evaluator::record_errors(const Scenario& s) const {
+  const ObjectiveSpec& o = spec_.objective;
+  identify::FitOptions fit;
+  fit.segment_length_s = o.segment_s;
+  fit.pressure_scale_Pa = o.pressure_scale_kPa * 1e3;
+  fit.velocity_scale_m_per_s = o.velocity_scale_mm_per_s * 1e-3;
+  Evaluation e{0.0, {}};
+  for (std::size_t k = 0; k < records_.size(); ++k) {
+    double error = kNaN;
+    try {
+      identify::FitOptions f = fit;
+      if (o.records[k].x0_mm) f.x0_m = *o.records[k].x0_mm * 1e-3;
+      const Scenario sk = at_record_conditions(s, o.records[k]);
+      error = scaled_record_error(identify::segment_simulation(records_[k], sk, f),
+                                  fit.pressure_scale_Pa, fit.velocity_scale_m_per_s);
+    } catch (const Error&) {
+      // The model refuses the point, or its segments do not simulate (a RunError of the
+      // simulation, not of a file): this record's worst.
+    }
+    e.terms.push_back(error);
+    // e / (1 + e) keeps the objective in [0, 1] like the other kinds, 1 the worst, with the
+    // same order as the errors themselves.
+    e.objective += std::isnan(error) ? 1.0 : error / (1.0 + error);
+  }
+  e.objective /= static_cast<double>(records_.size());
+  return e;
+}
+
 Evaluation Evaluator::evaluate(const std::vector<double>& u, const std::string& dir) const {
   std::optional<Scenario> s;
   try {
@@ -73,6 +137,9 @@ Evaluation Evaluator::evaluate(const std::vector<double>& u, const std::string& 
   }
   if (spec_.objective.kind == ObjectiveKind::kIncidenceMap)
     return s ? map_errors(*s, dir) : Evaluation{1.0, {kNaN, kNaN}};
+  if (spec_.objective.kind == ObjectiveKind::kRecords)
+    return s ? record_errors(*s)
+             : Evaluation{1.0, std::vector<double>(spec_.objective.records.size(), kNaN)};
   const auto& fit = spec_.objective.fit.claims;
   ClaimInputs inputs;
   if (s) run_conditions(spec_.objective, *s, spec_.objective.fit, dir, settings_, inputs);

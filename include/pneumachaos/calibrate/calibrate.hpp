@@ -35,6 +35,7 @@ struct CalibrationResult {
   std::vector<ScoredClaim> fitted;      ///< the objective's claims at the best point
   std::vector<ScoredClaim> predicted;   ///< [predict]'s claims, judged only there
   std::vector<double> map_errors;       ///< incidence_map: RMS stick-slip and chaos errors
+  std::vector<double> record_errors;    ///< records: each record's scaled RMS error (NaN: failed)
   std::vector<Claim> all_claims;        ///< every row at the best point (claims.json)
   bool wrote_files = true;              ///< false on the MPI ranks other than 0
 };

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,16 @@ struct ConditionSet {
   std::vector<ClaimWeight> claims;
 };
 
-enum class ObjectiveKind { kClaims, kIncidenceMap };
+enum class ObjectiveKind { kClaims, kIncidenceMap, kRecords };
+
+/// A measured record (P1, P2, v; docs/fit.md "Input") and the conditions it was taken at; a
+/// condition not given keeps the [fixed] scenario's value.
+struct RecordCondition {
+  std::string file;  ///< the CSV's path (relative to the spec's folder)
+  std::optional<double> S1_mm2, S2_mm2, Ps_MPa, m_kg;  ///< m_kg: the total moving mass
+  std::optional<double> x0_mm;  ///< the piston's position at the first sample, without an x column
+  std::string where;
+};
 
 /// The maps' grid and runs (objective and predictions alike).
 struct MapSettings {
@@ -65,6 +75,10 @@ struct ObjectiveSpec {
   bool example_model_exponent = false;  ///< the model's own exponent (shown, never scored)
   std::string measured_map;    ///< kIncidenceMap: the CSV's path (relative to the spec's folder)
   double stick_slip_weight = 1.0, chaos_weight = 1.0;  ///< kIncidenceMap
+  std::vector<RecordCondition> records;  ///< kRecords
+  /// kRecords: the segment-wise simulation's segment and the noise scales of its residuals,
+  /// as `fit` uses them (docs/fit.md, "Method").
+  double segment_s = 0.2, pressure_scale_kPa = 1.0, velocity_scale_mm_per_s = 30.0;
 };
 
 struct OptimizerSpec {
