@@ -126,6 +126,27 @@ TEST(CalibrationSpec, RefusesAClaimTheGridCannotScore) {
   EXPECT_EQ(refusal(spec("circuit.S2_mm2=0.05:4.40:0.60")), "");
 }
 
+TEST(CalibrationSpec, RefusesBadRecordsNamingTheLine) {
+  const std::string rigid = "[fixed]\nload.coupling = \"rigid\"\n";
+  const std::string head = kFree + rigid + "[objective]\nkind = \"records\"\n";
+  EXPECT_NE(refusal(head + "records = []\n").find("spec.toml:"), std::string::npos);
+  EXPECT_NE(refusal(head + "records = [ { S1_mm2 = 2.7 } ]\n").find("needs file"), std::string::npos);
+  const std::string unknown = refusal(head + "records = [ { file = \"a.csv\", S3_mm2 = 1 } ]\n");
+  EXPECT_NE(unknown.find("records.S3_mm2"), std::string::npos) << unknown;
+  EXPECT_NE(refusal(head + "records = [ { file = \"a.csv\", m_kg = -1 } ]\n").find("m_kg"),
+            std::string::npos);
+  EXPECT_NE(refusal(head + "records = [ { file = \"a.csv\" } ]\nsegment_s = 0\n").find("segment_s"),
+            std::string::npos);
+  // A valve area is free to fit where no record sets it, and refused where one does.
+  const std::string s1 =
+      "[[free]]\nkey = \"circuit.S1_mm2\"\nlower = 1\nupper = 4\nsource = \"x\"\n" + rigid +
+      "[objective]\nkind = \"records\"\n";
+  EXPECT_EQ(refusal(s1 + "records = [ { file = \"a.csv\", S2_mm2 = 0.35 } ]\n"), "");
+  EXPECT_NE(refusal(s1 + "records = [ { file = \"a.csv\", S1_mm2 = 2.7 } ]\n")
+                .find("set by the conditions"),
+            std::string::npos);
+}
+
 // A shifted ellipsoid in 3 dimensions with its minimum at a known point inside the box: the
 // optimizer must find it to 1e-3 (CMA-ES converges linearly on it; Hansen's tutorial,
 // arXiv:1604.00772, reports ~1e3 evaluations to 1e-8 at n = 3).

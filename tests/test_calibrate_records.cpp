@@ -1,6 +1,7 @@
 // calibrate's records objective (docs/guide/calibrate.md, "Measured records"): a record made by
 // the model itself at a known Coulomb friction, degraded as an A/D rig degrades it, is matched
-// best at that friction, and the optimizer finds its basin; the spec's checks name file:line.
+// best at that friction, and the optimizer finds its basin. The spec's checks of records:
+// tests/test_calibrate.cpp.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -14,7 +15,6 @@
 #include "identify/fit_synthetic.hpp"
 #include "pneumachaos/calibrate/calibrate.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 
 namespace pneumachaos {
@@ -79,36 +79,6 @@ TEST(CalibrationRecords, TheModelsOwnRecordIsMatchedBestAtItsFrictionAndFound) {
   // The file read back gives the record's error at the same point.
   EXPECT_NEAR(r.record_errors[0], error_at(r.best_values[0]), 1e-6 * r.record_errors[0]);
   std::filesystem::remove_all(dir);
-}
-
-// The message of the Error that parsing `text` throws ("" when none is thrown).
-std::string refusal(const std::string& text) {
-  try {
-    parse_calibration_spec(text, "spec.toml");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
-TEST(CalibrationRecords, TheSpecRefusesBadRecordsNamingTheLine) {
-  const std::string head = kFree + kFixed + "[objective]\nkind = \"records\"\n";
-  EXPECT_NE(refusal(head + "records = []\n").find("spec.toml:"), std::string::npos);
-  EXPECT_NE(refusal(head + "records = [ { S1_mm2 = 2.7 } ]\n").find("needs file"), std::string::npos);
-  const std::string unknown = refusal(head + "records = [ { file = \"a.csv\", S3_mm2 = 1 } ]\n");
-  EXPECT_NE(unknown.find("records.S3_mm2"), std::string::npos) << unknown;
-  EXPECT_NE(refusal(head + "records = [ { file = \"a.csv\", m_kg = -1 } ]\n").find("m_kg"),
-            std::string::npos);
-  EXPECT_NE(refusal(head + "records = [ { file = \"a.csv\" } ]\nsegment_s = 0\n").find("segment_s"),
-            std::string::npos);
-  // A valve area is free to fit where no record sets it, and refused where one does.
-  const std::string s1 =
-      "[[free]]\nkey = \"circuit.S1_mm2\"\nlower = 1\nupper = 4\nsource = \"x\"\n" + kFixed +
-      "[objective]\nkind = \"records\"\n";
-  EXPECT_EQ(refusal(s1 + "records = [ { file = \"a.csv\", S2_mm2 = 0.35 } ]\n"), "");
-  EXPECT_NE(refusal(s1 + "records = [ { file = \"a.csv\", S1_mm2 = 2.7 } ]\n")
-                .find("set by the conditions"),
-            std::string::npos);
 }
 
 }  // namespace

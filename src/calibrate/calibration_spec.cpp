@@ -177,29 +177,39 @@ std::vector<ClaimWeight> read_claims(Table& r) {
   return out;
 }
 
-std::vector<MapCondition> read_maps(Table& r) {
-  std::vector<MapCondition> out;
-  const toml::node* n = r.get("maps");
-  if (n == nullptr) return out;
+// Each inline table of the array `key` (nothing when it is absent), read by `read(table,
+// where)`; the item's unknown keys are refused. `shape` says what an item looks like.
+template <class Read>
+void for_each_item(Table& r, const std::string& key, const char* shape, Read read) {
+  const toml::node* n = r.get(key);
+  if (n == nullptr) return;
   const auto* a = n->as_array();
-  if (a == nullptr) throw Error(r.where("maps"), "expected an array of { role, Ps_MPa, m_kg }");
+  if (a == nullptr) throw Error(r.where(key), fmt::format("expected an array of {}", shape));
   for (const toml::node& item : *a) {
     const auto* t = item.as_table();
-    if (t == nullptr) throw Error(at(r.origin(), item, "maps"), "expected { role, Ps_MPa, m_kg }");
-    Table m(*t, r.origin(), "maps.");
+    const std::string where = at(r.origin(), item, key);
+    if (t == nullptr) throw Error(where, fmt::format("expected {}", shape));
+    Table m(*t, r.origin(), key + ".");
+    read(m, where);
+    m.no_other_keys();
+  }
+}
+
+std::vector<MapCondition> read_maps(Table& r) {
+  std::vector<MapCondition> out;
+  for_each_item(r, "maps", "{ role, Ps_MPa, m_kg }", [&](Table& m, const std::string& where) {
     MapCondition c;
-    c.where = at(r.origin(), item, "maps");
+    c.where = where;
     c.role = m.text("role").value_or("");
     if (!is_map_role(c.role))
       throw Error(m.where("role"), "expected role = \"base\" | \"high_ps\" | \"double_m\" | \"triple_m\"");
     c.Ps_MPa = m.number_or("Ps_MPa", c.Ps_MPa);
     c.m_kg = m.number_or("m_kg", c.m_kg);
-    m.no_other_keys();
     Scenario scratch = default_scenario();
     apply_setting(scratch, "supply.pressure_MPa", c.Ps_MPa, m.where("Ps_MPa"));
     if (!(c.m_kg > 0.0) || c.m_kg > 1000.0) throw Error(m.where("m_kg"), "expected 0 < m_kg <= 1000");
     out.push_back(c);
-  }
+  });
   return out;
 }
 
@@ -255,17 +265,10 @@ std::optional<double> record_setting(Table& m, const char* name, const char* key
 
 std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
   std::vector<RecordCondition> out;
-  const toml::node* n = r.get("records");
-  const auto* a = n != nullptr ? n->as_array() : nullptr;
-  if (a == nullptr || a->empty())
-    throw Error(r.where("records"), "needs records = [ { file = \"run.csv\", S1_mm2 = ..., "
-                                    "S2_mm2 = ..., Ps_MPa = ..., m_kg = ... }, ... ]");
-  for (const toml::node& item : *a) {
-    const auto* t = item.as_table();
-    if (t == nullptr) throw Error(at(r.origin(), item, "records"), "expected { file = \"...\", ... }");
-    Table m(*t, r.origin(), "records.");
+  const char* shape = "{ file = \"run.csv\", S1_mm2, S2_mm2, Ps_MPa, m_kg }";
+  for_each_item(r, "records", shape, [&](Table& m, const std::string& where) {
     RecordCondition c;
-    c.where = at(r.origin(), item, "records");
+    c.where = where;
     const auto file = m.text("file");
     if (!file || file->empty()) throw Error(m.where("file"), "needs file = \"run.csv\"");
     c.file = relative_to(dir, *file);
@@ -278,9 +281,10 @@ std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
     c.x0_mm = record_setting(m, "x0_mm", nullptr);
     if (c.x0_mm && !(*c.x0_mm >= 0.0 && *c.x0_mm <= 10000.0))
       throw Error(m.where("x0_mm"), "expected 0 <= x0_mm <= 10000");
-    m.no_other_keys();
     out.push_back(c);
-  }
+  });
+  if (out.empty())
+    throw Error(r.where("records"), fmt::format("needs records = [ {}, ... ]", shape));
   return out;
 }
 
