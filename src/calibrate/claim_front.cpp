@@ -45,12 +45,14 @@ std::vector<std::size_t> agreed_claims(const JournalEntry& e) {
 // The sets no other set contains (sorted vectors), largest first, then the most visited.
 std::vector<AgreedSet> maximal_sets(const std::map<std::vector<std::size_t>, AgreedSet>& sets) {
   std::vector<AgreedSet> front;
-  for (const auto& [claims, s] : sets) {
+  for (const auto& entry : sets) {
+    // Named, not a structured binding: clang before 16 cannot capture those in a lambda.
+    const std::vector<std::size_t>& claims = entry.first;
     const bool contained = std::any_of(sets.begin(), sets.end(), [&](const auto& other) {
       return other.first.size() > claims.size() &&
              std::includes(other.first.begin(), other.first.end(), claims.begin(), claims.end());
     });
-    if (!contained) front.push_back(s);
+    if (!contained) front.push_back(entry.second);
   }
   std::stable_sort(front.begin(), front.end(), [](const AgreedSet& a, const AgreedSet& b) {
     if (a.claims.size() != b.claims.size()) return a.claims.size() > b.claims.size();
