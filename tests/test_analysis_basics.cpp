@@ -170,6 +170,41 @@ TEST(Embedding, BatchedQueriesAnswerAsSingleOnes) {
   }
 }
 
+TEST(Embedding, BoundedNearestAreTheOpenSearchesEntriesBelowTheBound) {
+  // Wolf's replacements search within a radius first; the answer must be the open search's
+  // list cut at the radius, in the same order, ties included (the quantised record has many
+  // equal distances, and a radius can fall exactly on one of them).
+  std::vector<double> quantised(1500);
+  for (std::size_t i = 0; i < quantised.size(); ++i) {
+    quantised[i] = std::round(8.0 * std::sin(0.07 * i) + 3.0 * std::sin(0.19 * i));
+  }
+  std::vector<double> chaotic = lorenz_x(1500);
+  std::size_t cut = 0, whole = 0;
+  for (const auto* x : {&chaotic, &quantised}) {
+    const DelayEmbedding e(*x, 2, 3);
+    const NeighbourIndex index(e, 0, repeat_resolution(*x));
+    for (std::size_t i = 0; i < e.size(); i += 7) {
+      const auto open = index.k_nearest(i, 12, 10);
+      ASSERT_FALSE(open.empty());
+      for (const double r : {0.0, std::sqrt(open.front().distance2),
+                             std::sqrt(open[open.size() / 2].distance2) * 1.000001,
+                             std::sqrt(open.back().distance2), 1e9}) {
+        const auto bounded = index.k_nearest_within(i, 12, 10, r);
+        std::size_t below = 0;
+        while (below < open.size() && open[below].distance2 < r * r) ++below;
+        ASSERT_EQ(bounded.size(), below) << "query " << i << " r " << r;
+        for (std::size_t k = 0; k < below; ++k) {
+          EXPECT_EQ(bounded[k].index, open[k].index) << "query " << i << " r " << r;
+          EXPECT_EQ(bounded[k].distance2, open[k].distance2);
+        }
+        (below < open.size() ? cut : whole) += 1;
+      }
+    }
+  }
+  EXPECT_GT(cut, 100u);  // the bound did cut lists short, and left some whole
+  EXPECT_GT(whole, 100u);
+}
+
 TEST(Embedding, ExactRepeatsAreSkipped) {
   // A quantised record: many exact repeats, which carry no direction.
   std::vector<double> x(2000);

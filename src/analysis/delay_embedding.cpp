@@ -185,14 +185,17 @@ std::vector<double> tree_points(const DelayEmbedding& e, const Groups& groups) {
 // and temporal neighbours while the tree is searched, so no over-fetching is needed.
 class ExcludingKnn {
  public:
+  // With a limit, only points closer than it are taken: the tree's pruning is monotone in
+  // worstDist(), so those are met in the same order as without one, and the answer is the
+  // unlimited answer's entries below the limit.
   ExcludingKnn(const Groups& g, std::size_t query, std::size_t theiler, std::size_t k,
-               double min_d2)
-      : g_(g), query_(query), theiler_(theiler), k_(k), min_d2_(min_d2) {}
+               double min_d2, double limit2 = std::numeric_limits<double>::max())
+      : g_(g), query_(query), theiler_(theiler), k_(k), min_d2_(min_d2), limit2_(limit2) {}
   [[nodiscard]] std::size_t size() const { return found_.size(); }
   [[nodiscard]] bool full() const { return found_.size() == k_; }
   bool addPoint(double d2, std::size_t k) {
     if (d2 <= min_d2_) return true;
-    if (full() && d2 >= found_.back().distance2) return true;
+    if (d2 >= worstDist()) return true;
     const std::size_t j = g_.resolve(k, query_, theiler_);
     if (j == std::string::npos) return true;
     auto pos = std::upper_bound(found_.begin(), found_.end(), d2,
@@ -202,14 +205,14 @@ class ExcludingKnn {
     return true;
   }
   [[nodiscard]] double worstDist() const {
-    return full() ? found_.back().distance2 : std::numeric_limits<double>::max();
+    return full() ? std::min(found_.back().distance2, limit2_) : limit2_;
   }
   std::vector<Neighbour> take() { return std::move(found_); }
 
  private:
   const Groups& g_;
   std::size_t query_, theiler_, k_;
-  double min_d2_;
+  double min_d2_, limit2_;
   std::vector<Neighbour> found_;
 };
 
@@ -297,6 +300,13 @@ std::size_t NeighbourIndex::size() const { return impl_->points; }
 std::vector<Neighbour> NeighbourIndex::k_nearest(std::size_t i, std::size_t k,
                                                  std::size_t theiler) const {
   ExcludingKnn result(impl_->groups, i, theiler, k, impl_->min_d2);
+  impl_->tree.search(impl_->point(i), result);
+  return result.take();
+}
+
+std::vector<Neighbour> NeighbourIndex::k_nearest_within(std::size_t i, std::size_t k,
+                                                        std::size_t theiler, double r) const {
+  ExcludingKnn result(impl_->groups, i, theiler, k, impl_->min_d2, r * r);
   impl_->tree.search(impl_->point(i), result);
   return result.take();
 }

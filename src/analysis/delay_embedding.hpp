@@ -61,6 +61,10 @@ class NeighbourIndex {
   /// Up to k nearest under the same rules, nearest first.
   [[nodiscard]] std::vector<Neighbour> k_nearest(std::size_t i, std::size_t k,
                                                  std::size_t theiler) const;
+  /// The entries of k_nearest(i, k, theiler) closer than r (squared distance below r^2),
+  /// nearest first: a search that prunes from the start what an open one prunes late.
+  [[nodiscard]] std::vector<Neighbour> k_nearest_within(std::size_t i, std::size_t k,
+                                                        std::size_t theiler, double r) const;
   /// All vectors within distance r of vector i under the same rules.
   [[nodiscard]] std::vector<Neighbour> within(std::size_t i, double r, std::size_t theiler) const;
   [[nodiscard]] std::size_t size() const;

@@ -102,18 +102,23 @@ class WolfGeometry {
   // the nearest) within radius, widening it up to 8x; -1 when there is no candidate.
   double choose(std::size_t fid, const std::vector<double>* old_sep, double radius,
                 double& d_out) {
-    collect_candidates(fid, old_sep);
+    // Usually a candidate lies within the radius itself, and it is chosen from the candidates
+    // there alone: those are the pool's entries that close (the separation is the tree's
+    // distance when neighbours are not aligned in time), found by a search bounded by it.
+    if (!aligned_) {
+      collect_candidates(fid, old_sep, radius * (1.0 + 1e-9));
+      if (const Candidate* best = best_within(radius)) {
+        d_out = best->distance;
+        return best->time;
+      }
+    }
+    collect_candidates(fid, old_sep, kOpen);
     if (pool_.empty()) {
       d_out = 0.0;
       return -1.0;
     }
     for (double scale = radius; scale <= 8.0 * radius; scale *= 2.0) {
-      const Candidate* best = nullptr;
-      for (const Candidate& c : pool_) {
-        if (c.distance <= scale && (best == nullptr || c.misalignment < best->misalignment))
-          best = &c;
-      }
-      if (best != nullptr) {
+      if (const Candidate* best = best_within(scale)) {
         d_out = best->distance;
         return best->time;
       }
@@ -151,9 +156,20 @@ class WolfGeometry {
     return static_cast<double>(j) + (aligned_ && j >= margin_ ? closest_offset(e_, i, j) : 0.0);
   }
 
-  // The nearest few dozen around the fiducial point, each placed (aligned in time for flows)
-  // and measured once before its scale and orientation are judged.
-  void collect_candidates(std::size_t fid, const std::vector<double>* old_sep) {
+  // The best-oriented candidate of the pool within distance `scale`, or null.
+  const Candidate* best_within(double scale) const {
+    const Candidate* best = nullptr;
+    for (const Candidate& c : pool_) {
+      if (c.distance <= scale && (best == nullptr || c.misalignment < best->misalignment))
+        best = &c;
+    }
+    return best;
+  }
+
+  // The nearest few dozen around the fiducial point (those closer than `limit`), each placed
+  // (aligned in time for flows) and measured once before its scale and orientation are judged.
+  static constexpr double kOpen = std::numeric_limits<double>::infinity();
+  void collect_candidates(std::size_t fid, const std::vector<double>* old_sep, double limit) {
     constexpr std::size_t kCandidates = 40;
     pool_.clear();
     double old_norm = 0.0;
@@ -161,7 +177,10 @@ class WolfGeometry {
       for (double c : *old_sep) old_norm += c * c;
       old_norm = std::sqrt(old_norm);
     }
-    for (const Neighbour& c : index_.k_nearest(fid, kCandidates, o_.theiler)) {
+    const std::vector<Neighbour> near =
+        limit == kOpen ? index_.k_nearest(fid, kCandidates, o_.theiler)
+                       : index_.k_nearest_within(fid, kCandidates, o_.theiler, limit);
+    for (const Neighbour& c : near) {
       if (c.index >= usable_ || c.index < margin_) continue;
       const double j = place(fid, c.index);
       const double d = separation(fid, j, cand_);
