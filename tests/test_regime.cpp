@@ -122,6 +122,45 @@ TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
   EXPECT_FALSE(analyze_series(ss, 1000.0, as_other).verdict.stick_slip);
 }
 
+std::string evidence_text(const Verdict& v) {
+  std::string all;
+  for (const auto& line : v.evidence) all += line + "\n";
+  return all;
+}
+
+// Read as a velocity, the same cubed noise has its "rests". IAAFT surrogates keep a record's
+// values and spectrum, so they linger near zero as often; a record no more predictable than
+// they are is a linear process seen through a static transform (the surrogates' null, which
+// cubed low-passed noise is), and its rests are passages through zero: stochastic, not
+// stick-slip. Without surrogates that cannot be told; a stick-slip record, noisy, keeps its
+// verdict with them (its rests beat the surrogates' shuffled ones).
+TEST(Regime, RestsOfNoiseThroughAStaticTransformAreNoStickSlip) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> gauss;
+  std::vector<double> cubed(10000);
+  double y = 0.0;
+  for (double& c : cubed) {
+    y = 0.98 * y + gauss(rng);
+    c = y * y * y;
+  }
+  AnalysisOptions with_surrogates;
+  with_surrogates.wolf = false;
+  with_surrogates.surrogates.count = 39;
+  const AnalysisResult noise = analyze_series(cubed, 1000.0, with_surrogates);
+  ASSERT_GT(noise.evidence.rest_intervals, 2u);  // the rests are there
+  EXPECT_EQ(noise.verdict.regime, Regime::kStochastic) << evidence_text(noise.verdict);
+  EXPECT_FALSE(noise.verdict.stick_slip);
+
+  AnalysisOptions without = with_surrogates;
+  without.surrogates.count = 0;
+  EXPECT_EQ(analyze_series(cubed, 1000.0, without).verdict.regime, Regime::kStickSlip);
+
+  std::vector<double> ss = resting_half_sines();
+  for (double& v : ss) v += 0.0002 * gauss(rng);  // a transducer's noise, 0.2 % of the peak
+  const AnalysisResult stick = analyze_series(ss, 1000.0, with_surrogates);
+  EXPECT_EQ(stick.verdict.regime, Regime::kStickSlip) << evidence_text(stick.verdict);
+}
+
 // Stick-slip whose slips follow a rule: each slip a half sine after a rest, the n-th slip's
 // peak speed and duration set by slip_size(n) in [0, 1] (rest 40 % of a nominal 500-sample
 // cycle, like the corpus's stick-slip record).
@@ -210,12 +249,6 @@ RegimeEvidence irregular_evidence() {
   e.surrogate_run = true;
   e.surrogate_count = 39;
   return e;
-}
-
-std::string evidence_text(const Verdict& v) {
-  std::string all;
-  for (const auto& line : v.evidence) all += line + "\n";
-  return all;
 }
 
 // Issue 33: the determinism line said "below all N IAAFT surrogates" whatever the rank.

@@ -154,6 +154,12 @@ void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
           : std::string("second spectral line: none"));
 }
 
+// IAAFT surrogates keep the record's values and its spectrum, so they hold as many samples
+// near zero as the record: where the record is no more predictable than they are (the null
+// of a linear process seen through a static transform kept), its "rests" are passages through
+// zero of such a process (cubed low-passed noise lingers there), not a body at rest.
+bool rests_in_noise(bool stochastic, bool surrogate_run) { return surrogate_run && stochastic; }
+
 Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run, bool surrogate_run) {
   const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
@@ -168,7 +174,7 @@ Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run, bool surr
       zero_one_run ? c.diffusive : surrogate_run && !c.concentrated && !c.persistent;
   const bool stochastic = !c.steady && !regular && !c.deterministic && c.noise_like && irregular;
   if (chaotic) return Regime::kChaotic;
-  if (v.stick_slip) return Regime::kStickSlip;
+  if (v.stick_slip && !rests_in_noise(stochastic, surrogate_run)) return Regime::kStickSlip;
   if (c.steady) return Regime::kSteady;
   if (regular) return c.second_line ? Regime::kQuasiPeriodic : Regime::kPeriodic;
   if (stochastic) return Regime::kStochastic;
@@ -203,7 +209,9 @@ std::string verdict_rule(const VerdictOptions&) {
          "than that rise); deterministic = more predictable than every surrogate and by the "
          "local-constant predictor more than the linear one (where run; else prediction ratio "
          "low); chaotic = exponential divergence AND deterministic AND "
-         "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged; else "
+         "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged (unless "
+         "stochastic with the surrogates run: rests of a linear process seen through a static "
+         "transform); else "
          "steady; else regular = no exponential divergence AND (the record repeats itself OR 0-1 K "
          "low, where run; else a concentrated spectrum AND a persisting autocorrelation): "
          "quasi-periodic with a second incommensurate line, periodic without; else stochastic = "
@@ -253,6 +261,10 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
   }
   v.regime = combine(c, v, e.zero_one_run, e.surrogate_run);
   v.chaotic = v.regime == Regime::kChaotic;
+  if (v.stick_slip && v.regime == Regime::kStochastic) {
+    v.stick_slip = note(false, "stick-slip: the rests are a linear process's passages through "
+                               "zero: surrogates with the same values are as predictable");
+  }
   // "stochastic" is what the tests could establish, not where the record came from: a
   // noise-free simulation can earn it (issue 33), so the verdict says what it means.
   if (v.regime == Regime::kStochastic) {
