@@ -89,11 +89,8 @@ TEST(Regime, StickSlipAndSteadyRecords) {
   EXPECT_FALSE(d.verdict.stick_slip);
 }
 
-// A rest is a run at zero velocity, not any flat stretch near zero of any signal: cubed
-// low-passed Gaussian noise lingers flat at zero on each passage (d(x^3)/dt = 3 x^2 dx/dt),
-// which read as rests. As a velocity it may be cut into rests; as what it is, another
-// quantity, it is not judged for stick-slip, nor is the stick-slip record read as one.
-TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
+// Low-passed Gaussian noise, cubed: it lingers flat at zero on each passage.
+std::vector<double> cubed_lowpassed_noise() {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> gauss;
   std::vector<double> cubed(10000);
@@ -102,6 +99,15 @@ TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
     y = 0.98 * y + gauss(rng);
     c = y * y * y;
   }
+  return cubed;
+}
+
+// A rest is a run at zero velocity, not any flat stretch near zero of any signal: cubed
+// low-passed Gaussian noise lingers flat at zero on each passage (d(x^3)/dt = 3 x^2 dx/dt),
+// which read as rests. As a velocity it may be cut into rests; as what it is, another
+// quantity, it is not judged for stick-slip, nor is the stick-slip record read as one.
+TEST(Regime, RestsAreJudgedOnVelocitiesOnly) {
+  const std::vector<double> cubed = cubed_lowpassed_noise();
   AnalysisOptions as_velocity;
   as_velocity.wolf = false;
   AnalysisOptions as_other = as_velocity;
@@ -135,14 +141,9 @@ std::string evidence_text(const Verdict& v) {
 // stick-slip. Without surrogates that cannot be told; a stick-slip record, noisy, keeps its
 // verdict with them (its rests beat the surrogates' shuffled ones).
 TEST(Regime, RestsOfNoiseThroughAStaticTransformAreNoStickSlip) {
-  std::mt19937_64 rng(3);
+  const std::vector<double> cubed = cubed_lowpassed_noise();
+  std::mt19937_64 rng(4);
   std::normal_distribution<double> gauss;
-  std::vector<double> cubed(10000);
-  double y = 0.0;
-  for (double& c : cubed) {
-    y = 0.98 * y + gauss(rng);
-    c = y * y * y;
-  }
   AnalysisOptions with_surrogates;
   with_surrogates.wolf = false;
   with_surrogates.surrogates.count = 39;
