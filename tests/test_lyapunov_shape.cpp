@@ -44,6 +44,16 @@ TEST(DivergenceShape, CurvedCurveOfADeterministicRecordGetsAWideEstimate) {
   ASSERT_TRUE(est.is_object()) << j["lyapunov"].dump();
   EXPECT_TRUE(j["lyapunov"]["divergence"]["value"].is_null());  // the fitted value stays null
   EXPECT_TRUE(j["lyapunov"]["divergence"]["uncertainty"].is_null());
+  // No window of the record's: no fit, and a segment without a window of its own has no value
+  // (it read 0, a number nothing measured); one with its own keeps its slope.
+  EXPECT_TRUE(j["lyapunov"]["divergence"]["fit"].is_null());
+  const auto& segments = j["lyapunov"]["divergence"]["segments"];
+  std::size_t nulls = 0;
+  for (const auto& v : segments["values"]) {
+    if (v.is_null()) ++nulls;
+    else EXPECT_GT(v.get<double>(), 0.0) << segments.dump();
+  }
+  EXPECT_EQ(nulls, segments["without_own_linear_region"].get<std::size_t>()) << segments.dump();
 }
 
 TEST(DivergenceShape, NoiseAndFittedRecordsGetNoShapeEstimate) {

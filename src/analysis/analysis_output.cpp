@@ -204,9 +204,10 @@ nlohmann::json divergence_json(const AnalysisResult& r) {
        r.divergence.found_linear_region ? number(bits(r.divergence.lambda_per_s)) : nullptr},
       {"unit_bits", "bits/s"},
       {"found_linear_region", r.divergence.found_linear_region},
-      {"fit",
-       {{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
-        {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}},
+      {"fit", r.divergence.found_linear_region
+                  ? nlohmann::json{{"from", quantity(r.divergence.fit_first / r.rate_Hz, "s")},
+                                   {"to", quantity(r.divergence.fit_last / r.rate_Hz, "s")}}
+                  : nlohmann::json(nullptr)},
       {"aligned_in_time", r.divergence.aligned},
       {"method",
        "Rosenstein/Kantz divergence, automatic linear region; uncertainty: jackknife, "
@@ -226,8 +227,9 @@ nlohmann::json divergence_json(const AnalysisResult& r) {
           : nlohmann::json(nullptr);
   // The exponent fitted on each contiguous segment of the record (docs/notes/analysis.md
   // "Divergence exponent's uncertainty"): their spread is part of the uncertainty.
-  std::vector<double> segments;
-  for (double s : r.divergence.segment_slopes_per_step) segments.push_back(s * r.rate_Hz);
+  // A segment without a linear region of its own or the record's has no value: null.
+  nlohmann::json segments = nlohmann::json::array();
+  for (double s : r.divergence.segment_slopes_per_step) segments.push_back(number(s * r.rate_Hz));
   d["segments"] = {
       {"values", segments},
       {"unit", "1/s"},

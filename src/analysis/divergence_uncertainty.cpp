@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "analysis/linear_region.hpp"
@@ -51,9 +52,12 @@ SegmentSlopes segment_slopes(const std::vector<std::vector<double>>& sum,
     const LinearRegion region = find_linear_region(curve, spacing, tolerance);
     // A segment without a rising region of its own (its curve has a fifth of the references,
     // so noise can break the run of agreeing slopes) is fitted over the whole record's window:
-    // left out, it would drop exactly the segments that disagree.
-    r.slopes.push_back(region.found ? region.slope
-                                    : fit_line(curve, record_first, record_last).slope);
+    // left out, it would drop exactly the segments that disagree. Without a window of the
+    // record's either, it has no slope (NaN), not a slope of 0.
+    const bool record_window = record_last > record_first;
+    r.slopes.push_back(region.found    ? region.slope
+                       : record_window ? fit_line(curve, record_first, record_last).slope
+                                       : std::numeric_limits<double>::quiet_NaN());
     r.without_region += region.found ? 0 : 1;
   }
   const double n = static_cast<double>(segments);
