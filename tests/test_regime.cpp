@@ -252,6 +252,19 @@ RegimeEvidence irregular_evidence() {
   return e;
 }
 
+// A record below every surrogate, better predicted locally than linearly, with the 0-1 test's K
+// and quartiles given and the self-repetition test run.
+RegimeEvidence deterministic_evidence(double K, double q25, double q75) {
+  RegimeEvidence e = irregular_evidence();
+  e.zero_one_K = K;
+  e.zero_one_q25 = q25;
+  e.zero_one_q75 = q75;
+  e.surrogate_rejected = e.surrogate_more_predictable = true;
+  e.prediction_nonlinear = 0.1;
+  e.repetition.run = true;
+  return e;
+}
+
 // Issue 33: the determinism line said "below all N IAAFT surrogates" whatever the rank.
 TEST(Regime, SurrogateEvidenceSaysWhereTheRecordRanks) {
   RegimeEvidence e = irregular_evidence();
@@ -284,13 +297,7 @@ TEST(Regime, StochasticSaysWhatItMeans) {
 // test, misled by its sharp edges, reads K = 0.93; without a positive exponent a record that
 // repeats itself is periodic whatever K says.
 TEST(Regime, RepeatingRecordWithoutExponentIsPeriodicWhateverTheZeroOneTest) {
-  RegimeEvidence e = irregular_evidence();
-  e.zero_one_K = 0.93;
-  e.zero_one_q25 = 0.9;
-  e.zero_one_q75 = 0.95;
-  e.surrogate_rejected = e.surrogate_more_predictable = true;  // deterministic
-  e.prediction_nonlinear = 0.1;
-  e.repetition.run = true;
+  RegimeEvidence e = deterministic_evidence(0.93, 0.9, 0.95);
   e.repetition.share = 0.9;
   e.repetition.repeats = true;
   EXPECT_EQ(decide_regime(e).regime, Regime::kPeriodic) << evidence_text(decide_regime(e));
@@ -324,6 +331,66 @@ TEST(Regime, StochasticWithoutTheZeroOneTestFromTheOtherEvidence) {
   e.late_acf = 0.8;  // a persisting autocorrelation is no noise's
   e.broadband_share = 0.1;
   EXPECT_NE(decide_regime(e).regime, Regime::kStochastic);
+}
+
+// Issue 34: dysts's BurkeShaw, Qi and WangSun are deterministic (below every surrogate), the
+// 0-1 test reads K ~ 1, and their divergence curves rise all along without one straight
+// stretch: undetermined, though everything says chaos. The rise counts where the spectrum is
+// broadband, the autocorrelation dies and the 0-1 test supports it; not where the record
+// repeats itself (a torus's curve also rises), has the lines and lasting autocorrelation of a
+// noisy cycle, rests like stick-slip, or the 0-1 test reads it regular or did not run.
+TEST(Regime, CurveRisingAllAlongWithoutAStraightStretchCountsWithTheZeroOneTest) {
+  RegimeEvidence e = deterministic_evidence(0.998, 0.997, 0.999);
+  e.repetition.share = 0.03;
+  e.broadband_share = 0.6;
+  e.late_acf = 0.04;
+  e.rises_throughout = true;
+  e.rising_median_per_s = 2.0;
+  e.rising_low_per_s = 1.46;
+  const Verdict chaotic = decide_regime(e);
+  EXPECT_EQ(chaotic.regime, Regime::kChaotic) << evidence_text(chaotic);
+  EXPECT_NE(evidence_text(chaotic).find("[yes] a rise without a straight stretch"),
+            std::string::npos);
+
+  RegimeEvidence not_rising = e;
+  not_rising.rises_throughout = false;
+  EXPECT_EQ(decide_regime(not_rising).regime, Regime::kUndetermined);
+
+  RegimeEvidence torus = e;  // repeats over most of the record, the mismatch not growing
+  torus.repetition.repeats = true;
+  torus.repetition.share = 0.95;
+  torus.repetition.growth_per_s = 0.0;
+  EXPECT_EQ(decide_regime(torus).regime, Regime::kPeriodic) << evidence_text(decide_regime(torus));
+  torus.repetition.growth_per_s = 3.0;  // a mismatch growing faster than the rise: no veto
+  EXPECT_EQ(decide_regime(torus).regime, Regime::kChaotic);
+
+  RegimeEvidence resting = e;  // 40 % of the time at rest in 30 rests
+  resting.rest_intervals = 30;
+  resting.rest_share = 0.4;
+  EXPECT_EQ(decide_regime(resting).regime, Regime::kStickSlip);
+
+  RegimeEvidence regular_K = e;
+  regular_K.zero_one_K = 0.3;
+  EXPECT_NE(decide_regime(regular_K).regime, Regime::kChaotic);
+  RegimeEvidence no_zero_one = e;
+  no_zero_one.zero_one_run = false;
+  EXPECT_NE(decide_regime(no_zero_one).regime, Regime::kChaotic);
+
+  RegimeEvidence noisy_cycle = e;  // lines in the spectrum, an autocorrelation that persists
+  noisy_cycle.broadband_share = 0.05;
+  noisy_cycle.late_acf = 0.8;
+  EXPECT_NE(decide_regime(noisy_cycle).regime, Regime::kChaotic);
+  noisy_cycle.late_acf = 0.04;  // either one alone withholds the rise
+  EXPECT_NE(decide_regime(noisy_cycle).regime, Regime::kChaotic);
+  noisy_cycle.broadband_share = 0.6;
+  noisy_cycle.late_acf = 0.8;
+  EXPECT_NE(decide_regime(noisy_cycle).regime, Regime::kChaotic);
+
+  RegimeEvidence noise = e;  // no more predictable than the surrogates
+  noise.surrogate_rejected = noise.surrogate_more_predictable = false;
+  noise.surrogate_rank = 20;
+  noise.prediction_nonlinear = 1.0;
+  EXPECT_NE(decide_regime(noise).regime, Regime::kChaotic);
 }
 
 }  // namespace

@@ -209,7 +209,7 @@ void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResul
   r.divergence_status = fmt::format(
       "no rising linear region; the curve rises without one straight stretch (a deterministic "
       "record): its one-orbit local slopes over the rise give {:.4g} 1/s, 10-90 % {:.4g} .. "
-      "{:.4g} (a wide estimate, not read by the verdict)",
+      "{:.4g} (a wide estimate; the verdict reads only whether the curve rises all along)",
       d.local_slopes.median * rate_Hz, d.local_slopes.low * rate_Hz,
       d.local_slopes.high * rate_Hz);
 }
@@ -233,6 +233,11 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   if (o.wolf) run_wolf(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;
+  // Computed only without a linear region (divergence_exponent).
+  const SlopeSpread& rising = r.divergence.local_slopes;
+  e.rises_throughout = !e.lyapunov_found && rising.found && rising.low > 0.0;
+  e.rising_low_per_s = rising.low * rate_Hz;
+  e.rising_median_per_s = rising.median * rate_Hz;
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
   e.lyapunov_slope_uncertainty_per_s = r.divergence.slope_uncertainty_per_s;

@@ -31,6 +31,20 @@ class Notes {
   Verdict& v_;
 };
 
+// Without a linear region, a curve that rises all along its rise still says the separation
+// grows, but so does a torus's (a power of time) or a noisy cycle's (diffusion): the rise is
+// taken only where the paper's two other indices of chaos agree — a broadband spectrum and a
+// dying autocorrelation — the 0-1 test reads the motion irregular, and the record does not
+// rest like stick-slip (its rests are all one state: the rise then measures when the next
+// slip starts). A record that repeats itself is weighed in note_repetition against the local
+// slopes' 10 % quantile (docs/notes/analysis.md "Regime verdict").
+bool rise_counts(const RegimeEvidence& e, const VerdictOptions& o) {
+  const bool broadband = e.broadband_share >= o.periodic_max_broadband;
+  const bool dying = e.late_acf < o.periodic_min_late_acf;
+  return !e.lyapunov_found && e.rises_throughout && broadband && dying && e.zero_one_run &&
+         e.zero_one_K >= o.zero_one_split && !rests_like_stick_slip(e, o);
+}
+
 void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
   c.positive = note(
       e.lyapunov_found && e.lyapunov_per_s > 0.0 &&
@@ -42,6 +56,15 @@ void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note
                         e.lyapunov_uncertainty_per_s)
           : std::string("exponential divergence: the divergence curve has no rising linear "
                         "region"));
+  if (rise_counts(e, o)) {
+    c.positive = note(true, fmt::format("a rise without a straight stretch: the divergence "
+                                        "curve's one-orbit local slopes stay positive all along "
+                                        "its rise (median {:.4g}, 10 % quantile {:.4g} 1/s), with "
+                                        "a broadband spectrum, a dying autocorrelation, the 0-1 "
+                                        "test's K = {:.3f} >= {} and no stick-slip rests",
+                                        e.rising_median_per_s, e.rising_low_per_s, e.zero_one_K,
+                                        o.zero_one_split));
+  }
 }
 
 // A near-repeat x(t + L) ~ x(t) is a pair of nearby states; under a positive exponent its
@@ -67,7 +90,8 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
     return;
   }
   const double slowest =
-      e.lyapunov_per_s - o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s;
+      e.lyapunov_found ? e.lyapunov_per_s - o.lyapunov_sigmas * e.lyapunov_slope_uncertainty_per_s
+                       : e.rising_low_per_s;
   const bool veto = s.repeats && s.growth_per_s < slowest;
   note(veto, fmt::format("{}; the mismatch grows along it at {:.3g} 1/s (a veto needs less than "
                          "{:.3g} 1/s, the slowest exponent the divergence supports): {}",
@@ -204,9 +228,12 @@ const char* regime_name(Regime r) {
 }
 
 std::string verdict_rule(const VerdictOptions&) {
-  return "exponential divergence = the divergence curve rises above 3 sigma AND NOT the record "
-         "repeats itself (a small mismatch at one lag over most of the record, growing slower "
-         "than that rise); deterministic = more predictable than every surrogate and by the "
+  return "exponential divergence = (the divergence curve rises above 3 sigma, or without a "
+         "linear region its one-orbit local slopes stay positive all along its rise where the "
+         "spectrum is broadband, the autocorrelation dies, the 0-1 test runs and reads K high "
+         "and the record does not rest like stick-slip) AND NOT "
+         "the record repeats itself (a small mismatch at one lag over most of the record, "
+         "growing slower than that rise); deterministic = more predictable than every surrogate and by the "
          "local-constant predictor more than the linear one (where run; else prediction ratio "
          "low); chaotic = exponential divergence AND deterministic AND "
          "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged (unless "

@@ -96,7 +96,8 @@ struct AnalysisResult {
   SpectralLines lines;
   std::string divergence_status;  ///< what the divergence curve measured, or why nothing
   /// No linear region, but a deterministic record (the prediction test) whose curve rises:
-  /// divergence.local_slopes is reported as a wide estimate (not read by the verdict).
+  /// divergence.local_slopes is reported as a wide estimate (the verdict reads only whether
+  /// they stay positive: RegimeEvidence::rises_throughout).
   bool divergence_estimate = false;
   bool wolf_run = false;
   WolfResult wolf;

@@ -76,6 +76,12 @@ struct RegimeEvidence {
   std::size_t rest_intervals = 0;
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;
+  /// Without a linear region: the divergence curve's one-orbit local slopes over its rise,
+  /// their 10 % quantile and median [1/s]; rises_throughout: found, the quantile above 0 (the
+  /// curve rises all along its rise). Evidence of divergence only with the 0-1 test's support
+  /// (verdict_rule).
+  bool rises_throughout = false;
+  double rising_low_per_s = 0.0, rising_median_per_s = 0.0;
   double lyapunov_per_s = 0.0, lyapunov_uncertainty_per_s = 0.0;
   double lyapunov_slope_uncertainty_per_s = 0.0;  ///< the chosen window's slope alone
   double broadband_share = 0.0, late_acf = 0.0;
