@@ -48,7 +48,7 @@ TEST(Dysts, ARiseWithoutAStraightStretchIsChaoticButNotOnATorus) {
     o.surrogates.count = 39;
     const AnalysisResult r = analyze_series(x, kPointsPerPeriod / s.period, o);
     EXPECT_FALSE(r.divergence.found_linear_region) << s.name;
-    EXPECT_TRUE(r.evidence.rises_throughout) << s.name;
+    EXPECT_TRUE(r.evidence.rises_throughout()) << s.name;
     const Regime expected = s.name == "BurkeShaw" ? Regime::kChaotic : Regime::kQuasiPeriodic;
     EXPECT_EQ(r.verdict.regime, expected) << s.name;
   }

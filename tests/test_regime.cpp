@@ -344,7 +344,6 @@ TEST(Regime, CurveRisingAllAlongWithoutAStraightStretchCountsWithTheZeroOneTest)
   e.repetition.share = 0.03;
   e.broadband_share = 0.6;
   e.late_acf = 0.04;
-  e.rises_throughout = true;
   e.rising_median_per_s = 2.0;
   e.rising_low_per_s = 1.46;
   const Verdict chaotic = decide_regime(e);
@@ -353,7 +352,7 @@ TEST(Regime, CurveRisingAllAlongWithoutAStraightStretchCountsWithTheZeroOneTest)
             std::string::npos);
 
   RegimeEvidence not_rising = e;
-  not_rising.rises_throughout = false;
+  not_rising.rising_low_per_s = -0.2;  // a tenth of its local slopes falls
   EXPECT_EQ(decide_regime(not_rising).regime, Regime::kUndetermined);
 
   RegimeEvidence torus = e;  // repeats over most of the record, the mismatch not growing

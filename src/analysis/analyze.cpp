@@ -235,9 +235,10 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   e.lyapunov_found = r.divergence.found_linear_region;
   // Computed only without a linear region (divergence_exponent).
   const SlopeSpread& rising = r.divergence.local_slopes;
-  e.rises_throughout = !e.lyapunov_found && rising.found && rising.low > 0.0;
-  e.rising_low_per_s = rising.low * rate_Hz;
-  e.rising_median_per_s = rising.median * rate_Hz;
+  if (!e.lyapunov_found && rising.found) {
+    e.rising_low_per_s = rising.low * rate_Hz;
+    e.rising_median_per_s = rising.median * rate_Hz;
+  }
   e.lyapunov_per_s = r.divergence.lambda_per_s;
   e.lyapunov_uncertainty_per_s = r.divergence.uncertainty_per_s;
   e.lyapunov_slope_uncertainty_per_s = r.divergence.slope_uncertainty_per_s;

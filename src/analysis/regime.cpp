@@ -38,11 +38,17 @@ class Notes {
 // rest like stick-slip (its rests are all one state: the rise then measures when the next
 // slip starts). A record that repeats itself is weighed in note_repetition against the local
 // slopes' 10 % quantile (docs/notes/analysis.md "Regime verdict").
+bool autocorrelation_persists(const RegimeEvidence& e, const VerdictOptions& o) {
+  return e.late_acf >= o.periodic_min_late_acf;
+}
+bool spectrum_concentrated(const RegimeEvidence& e, const VerdictOptions& o) {
+  return e.broadband_share < o.periodic_max_broadband;
+}
+
 bool rise_counts(const RegimeEvidence& e, const VerdictOptions& o) {
-  const bool broadband = e.broadband_share >= o.periodic_max_broadband;
-  const bool dying = e.late_acf < o.periodic_min_late_acf;
-  return !e.lyapunov_found && e.rises_throughout && broadband && dying && e.zero_one_run &&
-         e.zero_one_K >= o.zero_one_split && !rests_like_stick_slip(e, o);
+  return !e.lyapunov_found && e.rises_throughout() && !spectrum_concentrated(e, o) &&
+         !autocorrelation_persists(e, o) && e.zero_one_run && e.zero_one_K >= o.zero_one_split &&
+         !rests_like_stick_slip(e, o);
 }
 
 void note_exponent(const RegimeEvidence& e, const VerdictOptions& o, Notes& note, Criteria& c) {
@@ -162,10 +168,10 @@ void note_determinism(const RegimeEvidence& e, const VerdictOptions& o, Notes& n
 
 void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& note,
                      Criteria& c) {
-  c.persistent = note(e.late_acf >= o.periodic_min_late_acf,
+  c.persistent = note(autocorrelation_persists(e, o),
                       fmt::format("autocorrelation persists: late envelope {:.3f} >= {}",
                                   e.late_acf, o.periodic_min_late_acf));
-  c.concentrated = note(e.broadband_share < o.periodic_max_broadband,
+  c.concentrated = note(spectrum_concentrated(e, o),
                         fmt::format("concentrated spectrum: broadband share {:.3f} < {}",
                                     e.broadband_share, o.periodic_max_broadband));
   c.second_line = note(

@@ -77,11 +77,11 @@ struct RegimeEvidence {
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;
   /// Without a linear region: the divergence curve's one-orbit local slopes over its rise,
-  /// their 10 % quantile and median [1/s]; rises_throughout: found, the quantile above 0 (the
-  /// curve rises all along its rise). Evidence of divergence only with the 0-1 test's support
-  /// (verdict_rule).
-  bool rises_throughout = false;
+  /// their 10 % quantile and median [1/s] (0 where they were not computed). Evidence of
+  /// divergence only with the other indices' support (verdict_rule).
   double rising_low_per_s = 0.0, rising_median_per_s = 0.0;
+  /// The curve rises all along its rise: even the 10 % quantile of its local slopes is above 0.
+  [[nodiscard]] bool rises_throughout() const { return rising_low_per_s > 0.0; }
   double lyapunov_per_s = 0.0, lyapunov_uncertainty_per_s = 0.0;
   double lyapunov_slope_uncertainty_per_s = 0.0;  ///< the chosen window's slope alone
   double broadband_share = 0.0, late_acf = 0.0;
