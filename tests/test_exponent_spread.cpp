@@ -1,11 +1,13 @@
-// The divergence exponent's uncertainty covers the choices behind its value: the window and
-// the embedding dimension (src/analysis/exponent_spread.hpp).
+// The divergence exponent's uncertainty covers the choices behind its value: the window (its
+// halves and the other stretches the window rule accepts) and the embedding dimension
+// (src/analysis/exponent_spread.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "analysis/exponent_spread.hpp"
+#include "analysis/linear_region.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "reference_series.hpp"
 
@@ -20,6 +22,7 @@ TEST(ExponentSpread, TheWindowsHalvesOfABendingCurve) {
   for (int k = 0; k <= 10; ++k) d.curve.push_back(k * k);
   d.fit_first = 0;
   d.fit_last = 10;
+  d.slope_spacing = 5;  // two segments: no stretch of three for the window rule to pass over
   d.found_linear_region = true;
   const double rate_Hz = 100.0;
   d.lambda_per_s = 10.0 * rate_Hz;
@@ -33,6 +36,39 @@ TEST(ExponentSpread, TheWindowsHalvesOfABendingCurve) {
   for (int k = 0; k <= 10; ++k) d.curve[k] = 2.0 * k;
   d.lambda_per_s = 2.0 * rate_Hz;
   EXPECT_NEAR(exponent_spread(unused, rate_Hz, {}, d, false).window_per_s, 0.0, 1e-9);
+}
+
+// S(k) rises 1 per step up to k = 30, then 0.25 per step up to k = 50: with segments of 5 steps
+// the window rule accepts both stretches and takes the longer one; the other's value lies
+// inside the widened 95 % interval. A straight line leaves no other stretch.
+TEST(ExponentSpread, TheOtherStretchesTheWindowRuleAccepts) {
+  DivergenceResult d;
+  for (int k = 0; k <= 50; ++k) d.curve.push_back(k <= 30 ? k : 30.0 + 0.25 * (k - 30));
+  d.slope_spacing = 5;
+  const double rate_Hz = 100.0;
+  const LinearRegion region = find_linear_region(d.curve, d.slope_spacing, 0.2);
+  ASSERT_TRUE(region.found);
+  EXPECT_EQ(region.first, 0u);
+  EXPECT_EQ(region.last, 30u);
+  EXPECT_EQ(agreeing_runs(d.curve, d.slope_spacing, 0.2).size(), 2u);
+  d.fit_first = region.first;
+  d.fit_last = region.last;
+  d.found_linear_region = true;
+  d.lambda_per_s = region.slope * rate_Hz;
+  const std::vector<double> unused;
+  DivergenceOptions o;
+  o.slope_tolerance = 0.2;
+  const ExponentSpread s = exponent_spread(unused, rate_Hz, o, d, false);
+  ASSERT_EQ(s.other_windows_per_s.size(), 1u);
+  EXPECT_NEAR(s.other_windows_per_s[0], 25.0, 1e-9);
+  EXPECT_NEAR(s.window_choice_per_s, 75.0, 1e-9);
+  EXPECT_GE(1.96 * widened_uncertainty(d, s), 75.0 - 1e-9);
+  for (int k = 0; k <= 50; ++k) d.curve[k] = 2.0 * k;
+  d.fit_last = 50;
+  d.lambda_per_s = 2.0 * rate_Hz;
+  const ExponentSpread line = exponent_spread(unused, rate_Hz, o, d, false);
+  EXPECT_TRUE(line.other_windows_per_s.empty());
+  EXPECT_EQ(line.window_choice_per_s, 0.0);
 }
 
 // On Lorenz the values at m - 1 and m + 1 lie inside the widened 95 % interval, which is

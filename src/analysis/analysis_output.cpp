@@ -238,6 +238,8 @@ nlohmann::json divergence_json(const AnalysisResult& r) {
   const ExponentSpread& s = r.exponent_spread;
   d["spread"] = r.divergence.found_linear_region
                     ? nlohmann::json{{"window", number(s.window_per_s)},
+                                     {"window_choice", number(s.window_choice_per_s)},
+                                     {"other_windows", s.other_windows_per_s},
                                      {"embedding", number(s.embedding_per_s)},
                                      {"dimensions", s.dimensions},
                                      {"values", s.lambda_per_s},

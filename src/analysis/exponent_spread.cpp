@@ -23,12 +23,25 @@ double window_spread(const DivergenceResult& d, double rate_Hz) {
   return spread;
 }
 
+// The window is the longest of the stretches the rule accepts; which one is longest can turn
+// on a single segment, so the value is also read on each of the others.
+void window_choice(const DivergenceResult& d, double tolerance, double rate_Hz,
+                   ExponentSpread& s) {
+  for (const LinearRegion& r : agreeing_runs(d.curve, d.slope_spacing, tolerance)) {
+    if (r.first == d.fit_first && r.last == d.fit_last) continue;
+    s.other_windows_per_s.push_back(r.slope * rate_Hz);
+    s.window_choice_per_s =
+        std::max(s.window_choice_per_s, std::abs(r.slope * rate_Hz - d.lambda_per_s));
+  }
+}
+
 }  // namespace
 
 ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, DivergenceOptions options,
                                const DivergenceResult& d, bool embeddings) {
   ExponentSpread s;
   s.window_per_s = window_spread(d, rate_Hz);
+  window_choice(d, options.slope_tolerance, rate_Hz, s);
   if (!embeddings) return s;
   const std::size_t m = options.dimension;
   // A spread, not a second measurement: a quarter of the pairs (dysts's flows: the truth inside
@@ -52,7 +65,8 @@ ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, Diverg
 }
 
 double widened_uncertainty(const DivergenceResult& d, const ExponentSpread& s) {
-  return std::hypot(d.uncertainty_per_s, s.window_per_s / 1.96, s.embedding_per_s / 1.96);
+  const double window = std::hypot(s.window_per_s, s.window_choice_per_s) / 1.96;
+  return std::hypot(d.uncertainty_per_s, window, s.embedding_per_s / 1.96);
 }
 
 }  // namespace pneumachaos

@@ -9,7 +9,8 @@
 
 namespace pneumachaos {
 
-/// The value on each half of `d`'s window, and (with `embeddings`) the value at dimensions
+/// The value on each half of `d`'s window and on the curve's other agreeing runs (the windows
+/// the rule passed over for a longer one), and (with `embeddings`) the value at dimensions
 /// m - 1 and m + 1 measured with `options` on a quarter of its reference pairs. `d` must have
 /// a linear region.
 ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, DivergenceOptions options,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace pneumachaos {
 
@@ -27,10 +28,10 @@ LineFit fit_line(const std::vector<double>& y, std::size_t first, std::size_t la
   return f;
 }
 
-LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
-                                double tolerance) {
-  LinearRegion best;
-  if (y.size() < 4) return best;
+std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_t spacing,
+                                        double tolerance) {
+  std::vector<LinearRegion> runs;
+  if (y.size() < 4) return runs;
   spacing = std::max<std::size_t>(1, std::min(spacing, (y.size() - 1) / 4));
   std::vector<std::size_t> at;
   for (std::size_t k = 0; k < y.size(); k += spacing) at.push_back(k);
@@ -38,8 +39,8 @@ LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacin
   for (std::size_t s = 0; s + 1 < at.size(); ++s) {
     slope[s] = (y[at[s + 1]] - y[at[s]]) / static_cast<double>(at[s + 1] - at[s]);
   }
-  // Longest run of rising segments whose slopes agree with their running mean.
-  std::size_t best_len = 0;
+  // From each rising segment, the run of segments whose slopes agree with their running mean.
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // segments [a, b)
   for (std::size_t a = 0; a < slope.size(); ++a) {
     if (!(slope[a] > 0.0)) continue;
     double total = slope[a];
@@ -49,18 +50,32 @@ LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacin
       if (!(slope[b] > 0.0) || std::abs(slope[b] - mean) > tolerance * mean) break;
       total += slope[b];
     }
-    const std::size_t len = b - a;
-    if (len >= 3 && len > best_len) {
-      best_len = len;
-      best.found = true;
-      best.first = at[a];
-      best.last = at[b];
-    }
+    if (b - a >= 3) spans.emplace_back(a, b);
   }
-  if (best.found) {
-    const LineFit f = fit_line(y, best.first, best.last);
-    best.slope = f.slope;
-    best.intercept = f.intercept;
+  // Only the runs no other run contains (the scan from inside a run mostly ends where it does).
+  for (const auto& [a, b] : spans) {
+    const bool inside = std::any_of(spans.begin(), spans.end(), [&](const auto& o) {
+      return o != std::pair{a, b} && o.first <= a && b <= o.second;
+    });
+    if (inside) continue;
+    LinearRegion r;
+    r.found = true;
+    r.first = at[a];
+    r.last = at[b];
+    const LineFit f = fit_line(y, r.first, r.last);
+    r.slope = f.slope;
+    r.intercept = f.intercept;
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
+                                double tolerance) {
+  LinearRegion best;
+  // The longest run; ties: the earlier one (runs are in the order of their first segment).
+  for (const LinearRegion& r : agreeing_runs(y, spacing, tolerance)) {
+    if (!best.found || r.last - r.first > best.last - best.first) best = r;
   }
   return best;
 }

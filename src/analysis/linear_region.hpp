@@ -23,9 +23,13 @@ struct LinearRegion {
 };
 
 /// Samples the curve every `spacing` points and splits it into runs whose successive segment
-/// slopes stay within `tolerance` (relative) of the run's mean slope; the longest rising run
-/// wins (ties: the earlier one), and the line is fitted to all points it covers. A run must
-/// span at least three segments. This follows the idea of ChaosTools.jl's linear_region.
+/// slopes stay within `tolerance` (relative) of the run's mean slope: every rising run of at
+/// least three segments that no other contains, in the order of their start, each with the
+/// line fitted to all points it covers. This follows the idea of ChaosTools.jl's linear_region.
+std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_t spacing,
+                                        double tolerance);
+
+/// The longest of agreeing_runs (ties: the earlier one): the curve's linear region.
 LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
                                 double tolerance);
 

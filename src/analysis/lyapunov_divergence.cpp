@@ -178,6 +178,7 @@ DivergenceResult divergence_exponent(std::span<const double> x, double rate_Hz,
   const std::size_t spacing =
       o.slope_spacing > 0 ? o.slope_spacing : std::max<std::size_t>(1, plan.period / 2);
   const LinearRegion region = find_linear_region(r.curve, spacing, o.slope_tolerance);
+  r.slope_spacing = spacing;
   r.found_linear_region = region.found;
   r.fit_first = region.first;
   r.fit_last = region.last;

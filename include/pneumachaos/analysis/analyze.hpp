@@ -67,10 +67,15 @@ struct SeedAgreement {
 };
 
 /// What the divergence exponent depends on beyond its own curve, which its uncertainty
-/// includes: the window (each half of it fitted alone) and the embedding dimension (m - 1 and
-/// m + 1, those with a linear region; AnalysisOptions::embedding_spread).
+/// includes: the window (each half of it fitted alone, and the other stretches the window rule
+/// accepts) and the embedding dimension (m - 1 and m + 1, those with a linear region;
+/// AnalysisOptions::embedding_spread).
 struct ExponentSpread {
   double window_per_s = 0.0;  ///< largest change of the value when half the window is fitted
+  /// The values on the curve's other agreeing runs (the windows the rule passed over for a
+  /// longer one), and the largest |value there - value|.
+  std::vector<double> other_windows_per_s;
+  double window_choice_per_s = 0.0;
   std::vector<std::size_t> dimensions;
   std::vector<double> lambda_per_s;  ///< the value at each of `dimensions`
   double embedding_per_s = 0.0;      ///< largest |lambda(m') - lambda(m)|

@@ -48,6 +48,7 @@ struct DivergenceResult {
   double slope_per_step = 0.0;
   double intercept = 0.0;
   double lambda_per_s = 0.0;       ///< slope * rate
+  std::size_t slope_spacing = 0;   ///< segment length of the linear region's search, in steps
   /// The value's uncertainty: the slope's (below) and the spread of the segments' exponents,
   /// in quadrature; +-1.96 of it is meant as a 95 % interval (docs/notes/analysis.md "Divergence
   /// exponent's uncertainty").
