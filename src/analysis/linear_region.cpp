@@ -53,15 +53,15 @@ std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_
     if (b - a >= 3) spans.emplace_back(a, b);
   }
   // Only the runs no other run contains (the scan from inside a run mostly ends where it does).
-  for (const auto& [a, b] : spans) {
+  for (const auto& run : spans) {
     const bool inside = std::any_of(spans.begin(), spans.end(), [&](const auto& o) {
-      return o != std::pair{a, b} && o.first <= a && b <= o.second;
+      return o != run && o.first <= run.first && run.second <= o.second;
     });
     if (inside) continue;
     LinearRegion r;
     r.found = true;
-    r.first = at[a];
-    r.last = at[b];
+    r.first = at[run.first];
+    r.last = at[run.second];
     const LineFit f = fit_line(y, r.first, r.last);
     r.slope = f.slope;
     r.intercept = f.intercept;
