@@ -29,9 +29,9 @@ void window_choice(const DivergenceResult& d, double tolerance, double rate_Hz,
                    ExponentSpread& s) {
   for (const LinearRegion& r : agreeing_runs(d.curve, d.slope_spacing, tolerance)) {
     if (r.first == d.fit_first && r.last == d.fit_last) continue;
-    s.other_windows_per_s.push_back(r.slope * rate_Hz);
-    s.window_choice_per_s =
-        std::max(s.window_choice_per_s, std::abs(r.slope * rate_Hz - d.lambda_per_s));
+    const double value = r.slope * rate_Hz;
+    s.other_windows_per_s.push_back(value);
+    s.window_choice_per_s = std::max(s.window_choice_per_s, std::abs(value - d.lambda_per_s));
   }
 }
 
