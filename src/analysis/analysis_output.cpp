@@ -102,6 +102,32 @@ std::string evidence_summary(const AnalysisResult& r) {
   return out;
 }
 
+std::string noise_floor_line(const AnalysisResult& r) {
+  const NoiseFloor& f = r.noise;
+  if (f.resolved) {
+    return fmt::format(
+        "noise floor: white noise of sd {:.3g} ({:.2g} % of the std); rests are "
+        "judged above it\n",
+        f.sd, 100.0 * f.sd / r.standard_deviation);
+  }
+  return fmt::format(
+      "noise floor: none resolved (the smallest scales are the signal's; any "
+      "white noise is below {:.3g})\n",
+      f.bound);
+}
+
+nlohmann::json noise_floor_json(const AnalysisResult& r, const std::string& unit) {
+  const NoiseFloor& f = r.noise;
+  return {{"sd", number(f.sd)},
+          {"bound", number(f.bound)},
+          {"resolved", f.resolved},
+          {"by_order", f.by_order},
+          {"unit", unit},
+          {"method",
+           "1.4826 MAD of the k-th differences / sqrt(C(2k, k)), k = 1 .. 5; resolved "
+           "where the last two agree"}};
+}
+
 // The tally over seeds: `seeds` 1 when no random test could turn the verdict.
 nlohmann::json seed_agreement_json(const SeedAgreement& a) {
   std::vector<std::string> regimes;
@@ -140,6 +166,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                      r.samples, name, unit, r.rate_Hz, r.samples / r.rate_Hz, r.mean,
                      r.standard_deviation);
   if (r.standard_deviation > 0.0) {
+    out += noise_floor_line(r);
     out += fmt::format(
         "spectrum: peak {:.4g} Hz ({:.1f} % of power), broadband share {:.3f}, flatness {:.3f}\n",
         r.spectrum.peak_frequency_Hz, 100.0 * r.spectrum.peak_share, r.spectrum.broadband_share,
@@ -260,6 +287,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                  {"rate", quantity(r.rate_Hz, "Hz")},
                  {"mean", quantity(r.mean, unit)},
                  {"std", quantity(r.standard_deviation, unit)}};
+  j["noise_floor"] = noise_floor_json(r, unit);
   j["spectrum"] = {{"peak_frequency", quantity(r.spectrum.peak_frequency_Hz, "Hz")},
                    {"peak_share", quantity(r.spectrum.peak_share, "-")},
                    {"broadband_share", quantity(r.spectrum.broadband_share, "-")},
@@ -300,6 +328,8 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                   {"chaotic", r.verdict.chaotic},
                   {"stick_slip", r.verdict.stick_slip},
                   {"rests_judged", r.evidence.rests_judged},
+                  {"rests_above_noise", r.evidence.rests_above_noise},
+                  {"rest_level", quantity(r.evidence.rest_level, unit)},
                   {"seed_agreement", seed_agreement_json(r.seed_agreement)},
                   {"evidence", r.verdict.evidence}};
   return j.dump(2);

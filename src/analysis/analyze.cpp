@@ -5,44 +5,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/rests.hpp"
 #include "analysis/series_statistics.hpp"
 #include "exponent_spread.hpp"
-#include "seed_agreement.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "seed_agreement.hpp"
 
 namespace pneumachaos {
 namespace {
-
-// Rest intervals: runs of at least min_len samples with |x| <= level whose spread stays
-// within level / 2; a smooth passage through zero spreads over the whole band and is no rest.
-void rest_statistics(std::span<const double> x, double level, std::size_t min_len,
-                     RegimeEvidence& e) {
-  std::size_t run = 0, at_rest = 0;
-  double lo = 0.0, hi = 0.0;
-  const auto close_run = [&] {
-    if (run >= min_len) {
-      ++e.rest_intervals;
-      at_rest += run;
-    }
-    run = 0;
-  };
-  for (double v : x) {
-    const bool inside = std::abs(v) <= level;
-    if (inside && run > 0 && std::max(hi, v) - std::min(lo, v) <= 0.5 * level) {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-      ++run;
-      continue;
-    }
-    close_run();
-    if (inside) {
-      run = 1;
-      lo = hi = v;
-    }
-  }
-  close_run();
-  e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
-}
 
 // The evidence beyond the exponents: the 0-1 test on the record down-sampled, the prediction
 // errors (determinism) and, when asked, the surrogate test. They read the record at one
@@ -161,13 +131,15 @@ void describe_record(std::span<const double> x, const AnalysisOptions& o, Analys
   e.last_half_mean = mean_of(last);
   e.last_half_std = standard_deviation(last);
   e.rests_judged = o.velocity;
-  if (o.velocity) rest_statistics(x, o.verdict.rest_fraction * max_abs, o.verdict.min_rest_samples, e);
+  r.noise = estimate_noise_floor(x);
+  e.noise_sd = r.noise.sd;
+  if (o.velocity) rest_statistics(x, o.verdict, r.noise.sd, e);
 }
 
 // Delay (mutual information), Theiler window, dimension (Cao), unless given.
 void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
                       AnalysisResult& r) {
-  r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x);
+  r.delay = o.delay > 0 ? DelayChoice{o.delay, "given", {}} : choose_delay(x, 0, r.noise.sd);
   // The orbit is the oscillation's; a record that rests between slips has none to speak of
   // (its maxima are the slips), and there the cap turned the rig's stick-slip records chaotic
   // against the model's own exponent (docs/notes/exponent_validation.md, "The delay within an

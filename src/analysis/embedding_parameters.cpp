@@ -31,14 +31,19 @@ std::vector<double> mutual_information(std::span<const double> x, std::size_t ma
   return I;
 }
 
-DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag) {
+DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag, double noise_sd) {
   if (x.size() < 32) throw Error("embedding delay", "at least 32 samples are needed");
   if (max_lag == 0) max_lag = std::max<std::size_t>(8, x.size() / 10);
   const std::size_t bins = default_bins(x.size());
-  detail::LaggedMutualInformation mi(x, bins);
-  // Plug-in bias of I for independent data, (B - 1)^2 / (2 N): the level the estimate sinks
-  // to once the record has decorrelated.
-  const double floor = std::pow(bins - 1.0, 2) / (2.0 * x.size());
+  const double resolution = kNoiseBinWidth * noise_sd;
+  detail::LaggedMutualInformation mi(x, bins, resolution);
+  // Plug-in bias of I for independent data, (B - 1)^2 / (2 N) with B the bins in use: the
+  // level the estimate sinks to once the record has decorrelated. Bins merged because the
+  // noise cannot tell their values apart are not in use; bins left empty by exact ties count
+  // as the record's own binning always has.
+  const double in_use =
+      static_cast<double>(bins) - static_cast<double>(detail::bins_merged_by(x, bins, resolution));
+  const double floor = std::pow(in_use - 1.0, 2) / (2.0 * x.size());
   DelayChoice c;
   const auto I = [&](std::size_t lag) {
     while (c.ami.size() <= lag) c.ami.push_back(mi.at(c.ami.size()));

@@ -12,8 +12,12 @@ namespace {
 // reach memory before the next (docs/notes/performance.md, "Mutual information").
 constexpr std::size_t kCopies = 4;
 
-// Equiprobable bin of every sample: its rank scaled to [0, bins).
-std::vector<std::uint32_t> rank_bins(std::span<const double> x, std::size_t bins) {
+// Equiprobable bin of every sample: its rank scaled to [0, bins). Values a bin cannot tell
+// apart share one: exact ties (quantised data), and values within `resolution` of the one
+// that opened the bin (the record's noise: equiprobable bins crowd where samples do, and on a
+// noisy rest they would split the noise into bins that measure nothing of the motion).
+std::vector<std::uint32_t> rank_bins(std::span<const double> x, std::size_t bins,
+                                     double resolution) {
   std::vector<std::size_t> order(x.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -22,21 +26,40 @@ std::vector<std::uint32_t> rank_bins(std::span<const double> x, std::size_t bins
   for (std::size_t r = 0; r < order.size(); ++r) {
     bin[order[r]] = static_cast<std::uint32_t>(r * bins / order.size());
   }
-  // Ties (quantised data) share one bin: take the bin of the first of equal values.
+  std::uint32_t current = bin[order[0]];
+  double opened_at = x[order[0]];
   for (std::size_t r = 1; r < order.size(); ++r) {
-    if (x[order[r]] == x[order[r - 1]]) bin[order[r]] = bin[order[r - 1]];
+    const double v = x[order[r]];
+    if (v == x[order[r - 1]] || v - opened_at <= resolution) {
+      bin[order[r]] = current;
+    } else if (bin[order[r]] != current) {
+      current = bin[order[r]];
+      opened_at = v;
+    }
   }
   return bin;
 }
 
+std::size_t bins_in_use(const std::vector<std::uint32_t>& bin) {
+  std::vector<std::uint32_t> sorted = bin;
+  std::sort(sorted.begin(), sorted.end());
+  return static_cast<std::size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+}
+
 }  // namespace
+
+std::size_t bins_merged_by(std::span<const double> x, std::size_t bins, double resolution) {
+  if (resolution <= 0.0 || x.empty()) return 0;
+  return bins_in_use(rank_bins(x, bins, 0.0)) - bins_in_use(rank_bins(x, bins, resolution));
+}
 
 // No count exceeds the largest bin's count over the whole record, so the table of c ln c up
 // to it (about N / bins entries; more where ties fill one bin) serves every cell and marginal
 // at every lag: one logarithm per entry instead of one per histogram cell per lag.
-LaggedMutualInformation::LaggedMutualInformation(std::span<const double> x, std::size_t bins)
+LaggedMutualInformation::LaggedMutualInformation(std::span<const double> x, std::size_t bins,
+                                                 double resolution)
     : bins_(bins),
-      bin_(rank_bins(x, bins)),
+      bin_(rank_bins(x, bins, resolution)),
       total_(bins, 0),
       joint_(kCopies * bins * bins, 0),
       margin_(bins, 0) {

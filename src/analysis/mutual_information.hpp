@@ -11,8 +11,9 @@ namespace pneumachaos::detail {
 
 class LaggedMutualInformation {
  public:
-  /// `bins` per axis, at least 1; x at least 2 samples.
-  LaggedMutualInformation(std::span<const double> x, std::size_t bins);
+  /// `bins` per axis, at least 1; x at least 2 samples. Values within `resolution` of the
+  /// first value of their bin share it (0: only exact ties do).
+  LaggedMutualInformation(std::span<const double> x, std::size_t bins, double resolution = 0.0);
 
   /// I(lag) [nats] of the pairs (x_i, x_{i+lag}), i < N - lag; lag < N.
   [[nodiscard]] double at(std::size_t lag);
@@ -30,5 +31,9 @@ class LaggedMutualInformation {
   std::vector<std::uint32_t> joint_;   ///< kCopies interleaved pair histograms (scratch)
   std::vector<std::uint32_t> margin_;  ///< one marginal's counts (scratch)
 };
+
+/// How many of `bins` equiprobable bins merging values within `resolution` leaves unused
+/// beyond those exact ties leave unused (0 for resolution 0).
+std::size_t bins_merged_by(std::span<const double> x, std::size_t bins, double resolution);
 
 }  // namespace pneumachaos::detail

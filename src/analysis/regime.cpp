@@ -258,7 +258,7 @@ bool is_steady(const RegimeEvidence& e, const VerdictOptions& o) {
 }
 
 bool rests_like_stick_slip(const RegimeEvidence& e, const VerdictOptions& o) {
-  return e.rests_judged && e.rest_intervals >= o.min_rest_intervals &&
+  return e.rests_judged && e.rests_above_noise && e.rest_intervals >= o.min_rest_intervals &&
          e.rest_share >= o.min_rest_share;
 }
 
@@ -271,13 +271,23 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     return v;
   }
   Criteria c;
-  if (e.rests_judged) {
+  if (e.rests_judged && !e.rests_above_noise) {
+    v.stick_slip = note(false, fmt::format("stick-slip: not judged: the noise floor {:.3g} widens "
+                                           "the rest band to {:.3g}, more than {} x max|x|: "
+                                           "rests cannot be told from the noise",
+                                           e.noise_sd, e.rest_level, o.max_rest_band));
+  } else if (e.rests_judged) {
     v.stick_slip =
         note(rests_like_stick_slip(e, o),
-             fmt::format("stick-slip: {} flat rest intervals of >= {} samples at |x| <= {} x "
-                         "max|x| (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
-                         e.rest_intervals, o.min_rest_samples, o.rest_fraction,
-                         o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));
+             fmt::format(
+                 "stick-slip: {} flat rest intervals of >= {} samples at |x| <= {:.4g} "
+                 "({} x max|x|{}) (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
+                 e.rest_intervals, o.min_rest_samples_at(e.noise_sd), e.rest_level, o.rest_fraction,
+                 e.noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g}; without a trend "
+                                                "and within {} x the noise about zero",
+                                                o.rest_noise_sigmas, e.noise_sd, o.rest_max_rms)
+                                  : std::string(),
+                 o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));
   } else {
     note.info("stick-slip: not judged: the record is not a velocity, and a rest is a run at zero "
               "velocity");

@@ -23,6 +23,13 @@ void VerdictOptions::validate() const {
         ">= 1");
   check(min_rest_share >= 0.0 && min_rest_share <= 1.0, "min_rest_share", min_rest_share,
         "between 0 and 1");
+  check(rest_noise_sigmas >= 0.0, "rest_noise_sigmas", rest_noise_sigmas, ">= 0");
+  check(rest_trend_sigmas > 0.0, "rest_trend_sigmas", rest_trend_sigmas, "> 0");
+  check(min_rest_samples_in_noise >= 1, "min_rest_samples_in_noise",
+        static_cast<double>(min_rest_samples_in_noise), ">= 1");
+  check(rest_max_rms > 0.0, "rest_max_rms", rest_max_rms, "> 0");
+  check(max_rest_band > 0.0 && max_rest_band <= 1.0, "max_rest_band", max_rest_band,
+        "> 0 and <= 1 (a fraction of max|x|)");
   check(steady_variation >= 0.0 && steady_variation < 1.0, "steady_variation", steady_variation,
         ">= 0 and < 1");
   check(lyapunov_sigmas > 0.0, "lyapunov_sigmas", lyapunov_sigmas, "> 0");

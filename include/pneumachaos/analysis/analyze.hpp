@@ -12,6 +12,7 @@
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
+#include "pneumachaos/analysis/noise_floor.hpp"
 #include "pneumachaos/analysis/poincare.hpp"
 #include "pneumachaos/analysis/prediction_error.hpp"
 #include "pneumachaos/analysis/regime.hpp"
@@ -85,6 +86,7 @@ struct AnalysisResult {
   std::size_t samples = 0;
   double rate_Hz = 0.0;
   double mean = 0.0, standard_deviation = 0.0;
+  NoiseFloor noise;                     ///< the record's white noise, estimated from the record
   double maxima_spacing_samples = 0.0;  ///< mean spacing of maxima
   /// Orbital period: the maxima spacing, or the fundamental's period when the maxima follow
   /// a harmonic (orbital_period, docs/notes/analysis.md "Orbital period").

@@ -26,8 +26,11 @@ struct DelayChoice {
 };
 
 /// First local minimum of I(tau) (searched up to N/10 lags); falls back to the lag where the
-/// autocorrelation drops below 1/e when I(tau) has no minimum.
-DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag = 0);
+/// autocorrelation drops below 1/e when I(tau) has no minimum. With the record's white noise
+/// of sd noise_sd (estimate_noise_floor), no bin of I is narrower than kNoiseBinWidth x
+/// noise_sd: finer bins would measure the noise, not the motion.
+DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag = 0, double noise_sd = 0.0);
+inline constexpr double kNoiseBinWidth = 2.0;
 
 /// `c`, unless its delay is an orbit (`orbit_samples`, e.g. the mean spacing of the maxima)
 /// or more: then a quarter of the orbit, where the first minimum of an oscillation's I lies,

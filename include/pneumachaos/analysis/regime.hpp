@@ -35,6 +35,25 @@ struct VerdictOptions {
   /// ...and together at least this share of the record: stick-slip rests for a good part of
   /// each cycle, while a chaotic record may linger near zero now and then (Lorenz's origin).
   double min_rest_share = 0.02;
+  /// With white noise of sd sigma in the record (AnalysisResult::noise), a rest's band widens
+  /// by this many sigma (a resting sample stays within 3.5 sigma with probability 99.95 %),
+  /// and a run counts only if its fitted change along it stays within rest_trend_sigmas
+  /// standard errors of what the noise alone gives (a real rest fails that 1 time in 20; the
+  /// flag needs several rests): a smooth passage through zero keeps its slope.
+  double rest_noise_sigmas = 3.5;
+  double rest_trend_sigmas = 2.0;
+  /// ...and its samples' RMS about zero at most this many sigma: a rest is the noise about
+  /// zero (n >= 5 resting samples exceed 1.5 sigma with a chance below 5 %, 10 below 1.5 %),
+  /// while a noise-driven motion lingering near zero (an AR(1) process) sits off it.
+  double rest_max_rms = 1.5;
+  /// ...and it lasts at least this many samples: a noise-driven motion (an AR(1) process)
+  /// passes through the widened band in a few samples looking at rest, while a body at rest
+  /// stays (20 ms at 1 kHz).
+  std::size_t min_rest_samples_in_noise = 20;
+  /// Rests are told from noise only where the band the noise widens stays within this
+  /// fraction of max|x| (ten times the clean band): beyond, a record of noise alone would
+  /// rest all the time, and rests are not judged.
+  double max_rest_band = 0.1;
   /// Steady: the last half varies (std) by at most this fraction of max(|mean|, range).
   double steady_variation = 0.01;
   /// Exponential divergence: the divergence exponent above lyapunov_sigmas x its slope's
@@ -63,6 +82,12 @@ struct VerdictOptions {
   /// Self-repetition veto: a record that repeats itself at one lag over most of its length,
   /// with a mismatch that does not grow at the claimed rate, has no exponential divergence.
   SelfRepetitionOptions repetition;
+  /// The shortest rest counted in a record whose white noise has sd noise_sd.
+  [[nodiscard]] std::size_t min_rest_samples_at(double noise_sd) const {
+    return noise_sd > 0.0 && min_rest_samples_in_noise > min_rest_samples
+               ? min_rest_samples_in_noise
+               : min_rest_samples;
+  }
   /// Throws Error naming the first threshold out of its range (a NaN is out of every range).
   void validate() const;
 };
@@ -73,6 +98,10 @@ struct RegimeEvidence {
   double mean = 0.0, range = 0.0, last_half_std = 0.0, last_half_mean = 0.0;
   /// Rests are looked for only in a velocity, where zero means rest (AnalysisOptions::velocity).
   bool rests_judged = true;
+  double noise_sd = 0.0;    ///< the record's white noise (0: none resolved)
+  double rest_level = 0.0;  ///< the band |x| <= rest_level a rest stays in
+  /// The band is narrow enough to tell rests from the noise (VerdictOptions::max_rest_band).
+  bool rests_above_noise = true;
   std::size_t rest_intervals = 0;
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;

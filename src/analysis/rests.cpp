@@ -1,0 +1,105 @@
+#include "analysis/rests.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace pneumachaos {
+namespace {
+
+struct RestBounds {
+  double level = 0.0;         ///< |x| at most this
+  double spread = 0.0;        ///< max - min within a run at most this
+  double clean_change = 0.0;  ///< the trend test's allowance without noise
+  double noise_sd = 0.0;
+  double trend_sigmas = 0.0;
+  double max_rms = 0.0;  ///< RMS about zero, in noise sd
+};
+
+// The least-squares line through x[first, first + n): its change over the n - 1 steps; and
+// the RMS of the samples about zero.
+struct RunShape {
+  double change = 0.0, rms = 0.0;
+};
+RunShape shape_of(std::span<const double> x, std::size_t first, std::size_t n) {
+  const double t_mean = 0.5 * static_cast<double>(n - 1);
+  double sxy = 0.0, sxx = 0.0, ss = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) - t_mean;
+    sxy += t * x[first + i];
+    sxx += t * t;
+    ss += x[first + i] * x[first + i];
+  }
+  const double slope = sxx > 0.0 ? sxy / sxx : 0.0;
+  return {std::abs(slope) * static_cast<double>(n - 1), std::sqrt(ss / static_cast<double>(n))};
+}
+
+// A rest under white noise of sd s is the noise about zero. Under the noise alone the fitted
+// change over n samples has sd s sqrt(12 (n - 1)^2 / (n^3 - n)) (the slope's variance is
+// s^2 / sum t^2): a passage through zero keeps its slope. And the samples' RMS about zero
+// stays near s: a slow noise-driven wander that lingers in the band (an AR(1) process) sits
+// off zero most of the time.
+bool rests_under_noise(std::span<const double> x, std::size_t first, std::size_t n,
+                       const RestBounds& b) {
+  if (b.noise_sd <= 0.0) return true;
+  const double nn = static_cast<double>(n);
+  const double change_sd =
+      b.noise_sd * std::sqrt(12.0 * (nn - 1.0) * (nn - 1.0) / (nn * nn * nn - nn));
+  const RunShape run = shape_of(x, first, n);
+  return run.change <= b.clean_change + b.trend_sigmas * change_sd &&
+         run.rms <= b.clean_change + b.max_rms * b.noise_sd;
+}
+
+}  // namespace
+
+void rest_statistics(std::span<const double> x, const VerdictOptions& o, double noise_sd,
+                     RegimeEvidence& e) {
+  double max_abs = 0.0;
+  for (double v : x) max_abs = std::max(max_abs, std::abs(v));
+  const double clean_level = o.rest_fraction * max_abs;
+  const double noisy_band = o.rest_noise_sigmas * noise_sd;
+  const RestBounds b{.level = clean_level + noisy_band,
+                     .spread = 0.5 * clean_level + 2.0 * noisy_band,
+                     .clean_change = 0.5 * clean_level,
+                     .noise_sd = noise_sd,
+                     .trend_sigmas = o.rest_trend_sigmas,
+                     .max_rms = o.rest_max_rms};
+  e.rest_level = b.level;
+  e.rest_intervals = 0;
+  e.rest_share = 0.0;
+  e.rests_above_noise = b.level <= o.max_rest_band * max_abs;
+  if (!e.rests_above_noise) return;
+  const std::size_t min_samples = o.min_rest_samples_at(noise_sd);
+  std::vector<std::pair<std::size_t, std::size_t>> rests;  // first sample, length
+  std::size_t first = 0, run = 0;
+  double lo = 0.0, hi = 0.0;
+  const auto close_run = [&] {
+    if (run >= min_samples && rests_under_noise(x, first, run, b)) rests.emplace_back(first, run);
+    run = 0;
+  };
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double v = x[i];
+    const bool inside = std::abs(v) <= b.level;
+    if (inside && run > 0 && std::max(hi, v) - std::min(lo, v) <= b.spread) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      ++run;
+      continue;
+    }
+    close_run();
+    if (inside) {
+      first = i;
+      run = 1;
+      lo = hi = v;
+    }
+  }
+  close_run();
+  std::size_t at_rest = 0;
+  for (const auto& r : rests) at_rest += r.second;
+  e.rest_intervals = rests.size();
+  e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
+}
+
+}  // namespace pneumachaos

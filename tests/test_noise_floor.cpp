@@ -1,0 +1,155 @@
+// The record's white noise floor and the rests judged above it (docs/notes/analysis.md
+// "Noise floor"): known noise levels are recovered, an oversampled clean signal shows none,
+// and a noisy record keeps the stick-slip flag its clean record has, while a noisy
+// oscillation through zero does not gain it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "analysis/rests.hpp"
+#include "pneumachaos/analysis/noise_floor.hpp"
+#include "pneumachaos/analysis/regime.hpp"
+
+namespace pneumachaos {
+namespace {
+
+constexpr double kRate_Hz = 1000.0;
+constexpr std::size_t kSamples = 10000;
+
+std::vector<double> add_noise(std::vector<double> x, double sd, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n(0.0, sd);
+  for (double& v : x) v += n(rng);
+  return x;
+}
+
+std::vector<double> tone(double f_Hz, double amplitude) {
+  std::vector<double> x(kSamples);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = amplitude * std::sin(2.0 * std::numbers::pi * f_Hz * static_cast<double>(i) / kRate_Hz);
+  }
+  return x;
+}
+
+// A stick-slip-like velocity: slips of a half sine, each followed by a rest of equal length
+// at exactly zero (5 Hz: 100 ms of slip, 100 ms of rest).
+std::vector<double> slips_and_rests(double amplitude) {
+  std::vector<double> x = tone(5.0, amplitude);
+  for (double& v : x) v = std::max(v, 0.0);
+  return x;
+}
+
+RegimeEvidence rests_of(const std::vector<double>& x) {
+  RegimeEvidence e;
+  rest_statistics(x, VerdictOptions{}, estimate_noise_floor(x).sd, e);
+  return e;
+}
+
+// The MAD's sd is about 1.1 / sqrt(N) of its value for normal data (N = 1e4: ~1 %); the
+// highest order's differences overlap five samples each, so allow 5 %.
+constexpr double kNoiseTolerance = 0.05;
+
+TEST(NoiseFloor, RecoversWhiteNoiseAloneAndOnAnOscillation) {
+  for (const double sd : {0.01, 0.3, 2.0}) {
+    const NoiseFloor alone = estimate_noise_floor(add_noise(std::vector<double>(kSamples), sd, 3));
+    EXPECT_TRUE(alone.resolved) << sd;
+    EXPECT_NEAR(alone.sd, sd, kNoiseTolerance * sd);
+    const NoiseFloor on_tone = estimate_noise_floor(add_noise(tone(10.0, 100.0 * sd), sd, 4));
+    EXPECT_TRUE(on_tone.resolved) << sd;
+    EXPECT_NEAR(on_tone.sd, sd, kNoiseTolerance * sd);
+  }
+}
+
+TEST(NoiseFloor, AnOversampledCleanSignalHasNone) {
+  const NoiseFloor f = estimate_noise_floor(tone(10.0, 1.0));
+  EXPECT_FALSE(f.resolved);
+  EXPECT_EQ(f.sd, 0.0);
+  // (2 pi 10 / 1000)^5 / sqrt(252) of the amplitude, and falling with every order.
+  EXPECT_LT(f.bound, 1e-6);
+  for (std::size_t k = 1; k < f.by_order.size(); ++k) EXPECT_LT(f.by_order[k], f.by_order[k - 1]);
+}
+
+TEST(NoiseFloor, NoisyRestsKeepTheStickSlipFlag) {
+  const double amplitude = 0.3;
+  const RegimeEvidence clean = rests_of(slips_and_rests(amplitude));
+  ASSERT_TRUE(rests_like_stick_slip(clean));
+  for (const double relative : {0.005, 0.01, 0.02}) {
+    const auto noisy = add_noise(slips_and_rests(amplitude), relative * amplitude, 5);
+    const RegimeEvidence e = rests_of(noisy);
+    EXPECT_TRUE(rests_like_stick_slip(e)) << "noise " << relative << " of the swing";
+    // Half the record rests; the band widened by the noise takes in the slips' ends too.
+    EXPECT_GT(e.rest_share, 0.4) << relative;
+    EXPECT_LT(e.rest_share, 0.65) << relative;
+  }
+}
+
+TEST(NoiseFloor, RestsAreNotJudgedWhereTheNoiseFillsTheBand) {
+  // White noise alone would "rest" all the time in a band widened by 3.5 sigma; so would a
+  // stick-slip record whose noise is 3 % of its swing, where the band reaches 11.5 % of it.
+  const auto noise = add_noise(std::vector<double>(kSamples), 1.0, 8);
+  RegimeEvidence e = rests_of(noise);
+  EXPECT_FALSE(e.rests_above_noise);
+  EXPECT_FALSE(rests_like_stick_slip(e));
+  EXPECT_EQ(e.rest_intervals, 0u);
+  e = rests_of(add_noise(slips_and_rests(0.3), 0.03 * 0.3, 5));
+  EXPECT_FALSE(e.rests_above_noise);
+  EXPECT_GT(e.rest_level, VerdictOptions{}.max_rest_band * 0.3);
+}
+
+TEST(NoiseFloor, ANoisyOscillationThroughZeroDoesNotRest) {
+  for (const double f_Hz : {1.0, 5.0, 20.0}) {
+    for (const double relative : {0.005, 0.01, 0.02, 0.03}) {
+      // Swing 2 x amplitude: the noise is `relative` of the swing.
+      const auto x = add_noise(tone(f_Hz, 0.1), relative * 0.2, 6);
+      const RegimeEvidence e = rests_of(x);
+      EXPECT_FALSE(rests_like_stick_slip(e)) << f_Hz << " Hz, noise " << relative << ": "
+                                             << e.rest_intervals << " rests, " << e.rest_share;
+    }
+  }
+}
+
+TEST(NoiseFloor, TheNoiseConditionsAreWhatRejectThePassages) {
+  // A slow noisy tone with the trend and the RMS conditions made toothless: its passages
+  // through the widened band then count as rests, which is why the conditions are there
+  // (with them: the test above).
+  const auto x = add_noise(tone(1.0, 0.1), 0.01 * 0.2, 6);
+  VerdictOptions loose;
+  loose.rest_trend_sigmas = 1e6;
+  loose.rest_max_rms = 1e6;
+  RegimeEvidence e;
+  rest_statistics(x, loose, estimate_noise_floor(x).sd, e);
+  EXPECT_TRUE(rests_like_stick_slip(e, loose)) << e.rest_share;
+}
+
+// An AR(1) process x' = 0.99 x + e read as a velocity: a noise-driven motion whose
+// innovations the noise floor takes for measurement noise, lingering near zero for a few
+// samples at a time.
+std::vector<double> ar1(double a, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n(0.0, 1.0);
+  std::vector<double> x(kSamples + 1000, 0.0);
+  for (std::size_t i = 1; i < x.size(); ++i) x[i] = a * x[i - 1] + n(rng);
+  return {x.begin() + 1000, x.end()};
+}
+
+TEST(NoiseFloor, ANoiseDrivenWanderThroughZeroDoesNotRest) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const auto x = ar1(0.99, seed);
+    ASSERT_TRUE(estimate_noise_floor(x).resolved) << "the premise: its innovations read as noise";
+    EXPECT_FALSE(rests_like_stick_slip(rests_of(x))) << seed;
+  }
+  // Counted from 5 samples as on a clean record, its passages read as rests.
+  VerdictOptions short_rests;
+  short_rests.min_rest_samples_in_noise = short_rests.min_rest_samples;
+  const auto x = ar1(0.99, 1);
+  RegimeEvidence e;
+  rest_statistics(x, short_rests, estimate_noise_floor(x).sd, e);
+  EXPECT_GT(e.rest_intervals, 2u);
+}
+
+}  // namespace
+}  // namespace pneumachaos
