@@ -6,7 +6,7 @@ cli=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 args=(sweep --grid circuit.S2_mm2=0.05:0.35:0.15 --repeats 2 --set run.duration_s=2
-      --set variation.friction_rel_sd=0.05 --set variation.sensor_noise_mm_per_s=0.5 --threads 2)
+      --set variation.friction_rel_sd=0.05 --set transducer.velocity_noise_mm_per_s=0.5 --threads 2)
 "$cli" "${args[@]}" --out "$work/map" >/dev/null
 "$cli" "${args[@]}" --replay 1:1 -o "$work/run.csv" 2>"$work/line"
 # runs.csv: one coordinate column (the grid has one axis) before the record.

@@ -85,7 +85,7 @@ TEST(Sweep, ZeroVariationGivesIdenticalRepeats) {
 
 TEST(Sweep, VariationGivesDifferentReproducibleRepeats) {
   const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.1", "variation.texture_rel=0.05",
-                                     "variation.sensor_noise_mm_per_s=0.5"});
+                                     "transducer.velocity_noise_mm_per_s=0.5"});
   const RunRecord a = run_one(spec, 1, 0), b = run_one(spec, 1, 1);
   EXPECT_NE(a.mean_v, b.mean_v);
   EXPECT_EQ(a.encode(), run_one(spec, 1, 0).encode());

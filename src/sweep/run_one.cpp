@@ -16,9 +16,10 @@ namespace {
 // a measured record (no peeking at the model's state).
 std::vector<double> measured_velocity(const SweepRun& run) {
   std::vector<double> v = run.sim.series.channel("v").values;
-  const double sd = run.scenario.variation.sensor_noise_m_per_s;
+  const double sd = run.scenario.transducer.velocity.noise_m_per_s;
   if (sd > 0.0) {
-    const std::vector<double> noise = sensor_noise(run.seed, v.size(), sd);
+    const std::vector<double> noise =
+        sensor_noise(run.seed, NoiseStream::kVelocity, v.size(), sd);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] += noise[i];
   }
   return v;
