@@ -91,6 +91,26 @@ TEST(Sweep, VariationGivesDifferentReproducibleRepeats) {
   EXPECT_EQ(a.encode(), run_one(spec, 1, 0).encode());
 }
 
+// The analysis judges v_measured: with the transducers ideal it is v itself, bit for bit, so
+// maps without transducer keys are those of the simulated velocity.
+TEST(Sweep, AnalysedVelocityIsTheMeasuredChannel) {
+  const SweepRun ideal = simulate_run(small_spec(), 1, 0);
+  EXPECT_EQ(ideal.measured_v, ideal.sim.series.channel("v").values);
+  EXPECT_EQ(ideal.measured_v, ideal.sim.series.channel("v_measured").values);
+  const SweepRun noisy = simulate_run(small_spec({"transducer.velocity_noise_mm_per_s=0.5"}), 1, 0);
+  EXPECT_NE(noisy.measured_v, noisy.sim.series.channel("v").values);
+  EXPECT_EQ(noisy.measured_v, noisy.sim.series.channel("v_measured").values);
+  EXPECT_TRUE(noisy.sim.series.has_channel("P1_measured"));
+  EXPECT_TRUE(noisy.sim.series.has_channel("P2_measured"));
+}
+
+TEST(Sweep, VelocityNoiseMakesRepeatsDiffer) {
+  SweepSpec spec = small_spec();
+  ASSERT_FALSE(spec.warnings().empty());  // identical repeats are warned about
+  spec = small_spec({"transducer.velocity_noise_mm_per_s=0.5"});
+  EXPECT_TRUE(spec.warnings().empty());
+}
+
 TEST(Sweep, ResultsDoNotDependOnTheThreadCount) {
   const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.05"});
   const std::string one = temp_dir("t1"), two = temp_dir("t2");
