@@ -1,21 +1,13 @@
 // Scenario keys, TOML reading and overrides.
 #include <gtest/gtest.h>
 
+#include "error_text.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 
 namespace pneumachaos {
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(Scenario, KeysConvertEngineeringUnitsOnce) {
   Scenario s = default_scenario();

@@ -85,10 +85,30 @@ TEST(Sweep, ZeroVariationGivesIdenticalRepeats) {
 
 TEST(Sweep, VariationGivesDifferentReproducibleRepeats) {
   const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.1", "variation.texture_rel=0.05",
-                                     "variation.sensor_noise_mm_per_s=0.5"});
+                                     "transducer.velocity_noise_mm_per_s=0.5"});
   const RunRecord a = run_one(spec, 1, 0), b = run_one(spec, 1, 1);
   EXPECT_NE(a.mean_v, b.mean_v);
   EXPECT_EQ(a.encode(), run_one(spec, 1, 0).encode());
+}
+
+// The analysis judges v_measured: with the transducers ideal it is v itself, bit for bit, so
+// maps without transducer keys are those of the simulated velocity.
+TEST(Sweep, AnalysedVelocityIsTheMeasuredChannel) {
+  const SweepRun ideal = simulate_run(small_spec(), 1, 0);
+  EXPECT_EQ(ideal.measured_v, ideal.sim.series.channel("v").values);
+  EXPECT_EQ(ideal.measured_v, ideal.sim.series.channel("v_measured").values);
+  const SweepRun noisy = simulate_run(small_spec({"transducer.velocity_noise_mm_per_s=0.5"}), 1, 0);
+  EXPECT_NE(noisy.measured_v, noisy.sim.series.channel("v").values);
+  EXPECT_EQ(noisy.measured_v, noisy.sim.series.channel("v_measured").values);
+  EXPECT_TRUE(noisy.sim.series.has_channel("P1_measured"));
+  EXPECT_TRUE(noisy.sim.series.has_channel("P2_measured"));
+}
+
+TEST(Sweep, VelocityNoiseMakesRepeatsDiffer) {
+  SweepSpec spec = small_spec();
+  ASSERT_FALSE(spec.warnings().empty());  // identical repeats are warned about
+  spec = small_spec({"transducer.velocity_noise_mm_per_s=0.5"});
+  EXPECT_TRUE(spec.warnings().empty());
 }
 
 TEST(Sweep, ResultsDoNotDependOnTheThreadCount) {

@@ -38,9 +38,10 @@ TEST(Variation, RunSeedsAreDistinctAcrossPointsAndRepeats) {
 }
 
 TEST(Variation, SensorNoiseIsSeededAndHasItsStandardDeviation) {
-  const std::vector<double> a = sensor_noise(42, 20000, 0.5e-3);
-  EXPECT_EQ(a, sensor_noise(42, 20000, 0.5e-3));
-  EXPECT_NE(a, sensor_noise(43, 20000, 0.5e-3));
+  const std::vector<double> a = sensor_noise(42, NoiseStream::kVelocity, 20000, 0.5e-3);
+  EXPECT_EQ(a, sensor_noise(42, NoiseStream::kVelocity, 20000, 0.5e-3));
+  EXPECT_NE(a, sensor_noise(43, NoiseStream::kVelocity, 20000, 0.5e-3));
+  EXPECT_NE(a, sensor_noise(42, NoiseStream::kPressure1, 20000, 0.5e-3));
   double mean = 0.0, square = 0.0;
   for (double x : a) {
     mean += x / a.size();

@@ -6,13 +6,10 @@
 
 #include <charconv>
 #include <csignal>
-#include <iostream>
 #include <optional>
 
 #include "commands.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/atomic_file.hpp"
-#include "pneumachaos/io/csv_writer.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
@@ -29,7 +26,8 @@ std::size_t replay_index(const std::string& text, std::size_t pos, std::size_t e
 }
 
 // One run of the sweep again, bit for bit: the record the analysis judged (the simulated
-// channels plus v_measured, the velocity with the transducer noise) and its runs.csv line.
+// channels plus the measured ones, v_measured, P1_measured and P2_measured, through the
+// transducers) and its runs.csv line.
 int replay(const SweepSpec& spec, const std::string& which, const std::string& path) {
   spec.validate();
   const auto colon = which.find(':');
@@ -40,20 +38,11 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
     throw Error("--replay", fmt::format("run {}:{} is outside the sweep ({} points x {} repeats)",
                                         point, repeat, spec.points(), spec.repeats));
   }
-  SweepRun run = simulate_run(spec, point, repeat);
+  const SweepRun run = simulate_run(spec, point, repeat);
   const RunRecord r = judge_run(spec, run);
   fmt::print(stderr, "{}\n{}\n", RunRecord::csv_header(), r.encode());
   if (!run.sim.summary.ok()) return kExitRunFailed;
-  TimeSeries& series = run.sim.series;
-  series.add_channel("v_measured", "m/s", std::move(run.measured_v));
-  if (path.empty()) {
-    write_csv(std::cout, series);
-    return kExitOk;
-  }
-  AtomicFile file(path);
-  write_csv(file.stream(), series);
-  file.commit();
-  return kExitOk;
+  return write_series_csv(run.sim.series, path);
 }
 
 // Ctrl-C (or a TERM) during a sweep: the journal keeps every finished run, so the message says

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 
 namespace pneumachaos::cli {
@@ -47,6 +48,10 @@ std::size_t option_or(const std::optional<std::string>& text, const std::string&
 /// --surrogates of `analyze` and `sweep`, checked by check_surrogate_count (an Error naming
 /// the option); `automatic` when not given.
 std::size_t surrogate_count_option(const std::optional<std::string>& text, std::size_t automatic);
+
+/// Writes the series as CSV to `path`, whole or not at all, or to standard output when `path`
+/// is empty (main checks that standard output took it all); returns kExitOk.
+int write_series_csv(const TimeSeries& series, const std::string& path);
 
 Action add_simulate(CLI::App& app);
 Action add_scenario(CLI::App& app);

@@ -3,13 +3,26 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <fmt/format.h>
 
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/csv_writer.hpp"
 
 namespace pneumachaos::cli {
+
+int write_series_csv(const TimeSeries& series, const std::string& path) {
+  if (path.empty()) {
+    write_csv(std::cout, series);
+    return kExitOk;
+  }
+  AtomicFile file(path);
+  write_csv(file.stream(), series);
+  file.commit();
+  return kExitOk;
+}
 
 void add_scenario_options(CLI::App* cmd, ScenarioArgs& args) {
   cmd->add_option("scenario", args.file, "scenario TOML file (default: built-in scenario)")

@@ -27,6 +27,7 @@
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/simulate/lyapunov_output.hpp"
+#include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"

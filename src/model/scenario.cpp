@@ -130,6 +130,7 @@ void Scenario::validate() const {
   }
   if (load.coupling == LoadCoupling::kSpring)
     check_friction(load.guide_friction, "guide_friction.");
+  transducer.validate();
   // The record is held in memory (a dozen channels of doubles): refuse up front what cannot
   // fit rather than fail after allocating gigabytes.
   constexpr double kMaxSamples = 2e7;

@@ -84,6 +84,15 @@ KeySpec plausible(std::string key, std::string unit, std::string description, do
   return s;
 }
 
+// A whole-number key held in an int field.
+template <typename Ref>
+KeySpec count(std::string key, std::string unit, std::string description, Range range, Ref ref) {
+  KeySpec s = number(std::move(key), std::move(unit), std::move(description), 1.0, range, ref);
+  s.whole = true;
+  s.set_number = [ref](Scenario& sc, double n) { ref(sc) = static_cast<int>(n); };
+  return s;
+}
+
 template <typename Enum, typename Ref>
 KeySpec word(std::string key, std::string description, std::vector<std::string> words, Ref ref) {
   KeySpec s;
@@ -100,14 +109,11 @@ KeySpec word(std::string key, std::string description, std::vector<std::string> 
 // The generalized Maxwell-slip keys (docs/model.md, "Friction"); the element count must be whole.
 template <typename Ref>
 void add_gms_keys(std::vector<KeySpec>& keys, const std::string& prefix, Ref ref) {
-  KeySpec count = number(
-      prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)", 1.0,
+  keys.push_back(count(
+      prefix + "gms_elements", "-", "gms: number of Maxwell-slip elements (a whole number)",
       Range{1.0, static_cast<double>(kMaxGmsElements)}, [ref](auto& s) -> auto& {
         return ref(s).gms.count;
-      });
-  count.whole = true;
-  count.set_number = [ref](Scenario& sc, double n) { ref(sc).gms.count = static_cast<int>(n); };
-  keys.push_back(std::move(count));
+      }));
   keys.push_back(number(
       prefix + "gms_stiffness_N_per_m", "N/m",
       "gms: total presliding stiffness, in equal shares over the elements", 1.0,
@@ -387,10 +393,6 @@ void add_run_keys(std::vector<KeySpec>& k) {
       "variation.texture_wavelength_mm", "mm", "typical wavelength of the texture", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.variation.texture_wavelength_m; }));
   k.push_back(number(
-      "variation.sensor_noise_mm_per_s", "mm/s",
-      "sd of white noise on the sampled velocity (a transducer)", 1e-3, kNonNegative,
-      [](auto& s) -> auto& { return s.variation.sensor_noise_m_per_s; }));
-  k.push_back(number(
       "run.duration_s", "s", "simulated time (the run also ends at stroke end)", 1.0, kPositive,
       [](auto& s) -> auto& { return s.run.duration_s; }));
   k.push_back(number(
@@ -412,6 +414,42 @@ void add_run_keys(std::vector<KeySpec>& k) {
       {"dopri5", "rosenbrock4"}, [](auto& s) -> auto& { return s.run.stepper; }));
 }
 
+// Keys of the transducers (docs/model.md, "The transducer"); 0 is the ideal transducer.
+void add_transducer_keys(std::vector<KeySpec>& k) {
+  const Range bits{0.0, static_cast<double>(kMaxTransducerBits)};
+  k.push_back(number(
+      "transducer.velocity_noise_mm_per_s", "mm/s",
+      "sd of white noise in the velocity record (seeded per run)", 1e-3, kNonNegative,
+      [](auto& s) -> auto& { return s.transducer.velocity.noise_m_per_s; }));
+  k.push_back(number(
+      "transducer.velocity_bandwidth_Hz", "Hz",
+      "corner frequency of the velocity transducer's first-order lag (0: unlimited)", 1.0,
+      kNonNegative, [](auto& s) -> auto& { return s.transducer.velocity.bandwidth_Hz; }));
+  k.push_back(count(
+      "transducer.velocity_bits", "bits",
+      "A/D resolution of the velocity record (0: not quantised; > 0 needs velocity_range_mm_per_s)",
+      bits, [](auto& s) -> auto& { return s.transducer.velocity.bits; }));
+  k.push_back(number(
+      "transducer.velocity_range_mm_per_s", "mm/s",
+      "full scale +-range of the velocity record, clipped beyond (0: none)", 1e-3, kNonNegative,
+      [](auto& s) -> auto& { return s.transducer.velocity.range_m_per_s; }));
+  k.push_back(number(
+      "transducer.pressure_noise_kPa", "kPa", "sd of white noise in the P1 and P2 records", 1e3,
+      kNonNegative, [](auto& s) -> auto& { return s.transducer.pressure.noise_Pa; }));
+  k.push_back(number(
+      "transducer.pressure_bandwidth_Hz", "Hz",
+      "corner frequency of the pressure transducers' first-order lag (0: unlimited)", 1.0,
+      kNonNegative, [](auto& s) -> auto& { return s.transducer.pressure.bandwidth_Hz; }));
+  k.push_back(count(
+      "transducer.pressure_bits", "bits",
+      "A/D resolution of the P1 and P2 records (0: not quantised; > 0 needs pressure_range_MPa)",
+      bits, [](auto& s) -> auto& { return s.transducer.pressure.bits; }));
+  k.push_back(number(
+      "transducer.pressure_range_MPa", "MPa (gauge)",
+      "full scale 0..range above ambient of the P1 and P2 records, clipped beyond (0: none)", 1e6,
+      kNonNegative, [](auto& s) -> auto& { return s.transducer.pressure.range_Pa; }));
+}
+
 // Every key, in the order `pneumachaos scenario` lists them.
 std::vector<KeySpec> build_keys() {
   std::vector<KeySpec> k;
@@ -420,6 +458,7 @@ std::vector<KeySpec> build_keys() {
   add_cylinder_keys(k);
   add_moving_part_keys(k);
   add_run_keys(k);
+  add_transducer_keys(k);
   return k;
 }
 

@@ -59,8 +59,8 @@ Scenario vary(const Scenario& base, std::uint64_t seed) {
   return s;
 }
 
-std::vector<double> sensor_noise(std::uint64_t seed, std::size_t n, double sd) {
-  std::mt19937_64 rng(splitmix64(seed ^ 0x5eed0002ULL));
+std::vector<double> sensor_noise(std::uint64_t seed, NoiseStream stream, std::size_t n, double sd) {
+  std::mt19937_64 rng(splitmix64(seed ^ static_cast<std::uint64_t>(stream)));
   boost::random::normal_distribution<double> noise(0.0, sd);
   std::vector<double> out(n);
   for (double& x : out) x = noise(rng);

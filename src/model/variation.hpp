@@ -20,9 +20,17 @@ std::uint64_t run_seed(std::uint64_t seed, std::uint64_t point, std::uint64_t re
 /// scenario comes back unchanged.
 Scenario vary(const Scenario& base, std::uint64_t seed);
 
-/// The run's sensor noise: n draws of N(0, sd^2) from a stream apart from vary()'s. Boost's
-/// distributions, unlike the standard library's, give the same numbers with every compiler
-/// and standard library, so a map is the same on every machine.
-std::vector<double> sensor_noise(std::uint64_t seed, std::size_t n, double sd);
+/// The random streams of a run's transducer noise, one per measured channel, each apart from
+/// the others and from vary()'s.
+enum class NoiseStream : std::uint64_t {
+  kVelocity = 0x5eed0002ULL,
+  kPressure1 = 0x5eed0003ULL,
+  kPressure2 = 0x5eed0004ULL,
+};
+
+/// A channel's transducer noise in the run of this seed: n draws of N(0, sd^2) from its stream.
+/// Boost's distributions, unlike the standard library's, give the same numbers with every
+/// compiler and standard library, so a map is the same on every machine.
+std::vector<double> sensor_noise(std::uint64_t seed, NoiseStream stream, std::size_t n, double sd);
 
 }  // namespace pneumachaos

@@ -5,24 +5,13 @@
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "model/variation.hpp"
+#include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
 namespace {
-
-// The analysis sees only the sampled velocity, with the transducer's noise, as it would see
-// a measured record (no peeking at the model's state).
-std::vector<double> measured_velocity(const SweepRun& run) {
-  std::vector<double> v = run.sim.series.channel("v").values;
-  const double sd = run.scenario.variation.sensor_noise_m_per_s;
-  if (sd > 0.0) {
-    const std::vector<double> noise = sensor_noise(run.seed, v.size(), sd);
-    for (std::size_t i = 0; i < v.size(); ++i) v[i] += noise[i];
-  }
-  return v;
-}
 
 void record_analysis(const AnalysisResult& a, RunRecord& r) {
   if (a.divergence.found_linear_region) {
@@ -68,7 +57,13 @@ SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repe
   run.seed = run_seed(spec.seed, point, repeat);
   run.scenario = vary(scenario_at(spec.base, spec.axes, grid_index(spec.axes, point)), run.seed);
   run.sim = simulate(Plant(run.scenario), run.scenario.run);
-  if (run.sim.summary.ok()) run.measured_v = measured_velocity(run);
+  if (!run.sim.summary.ok()) return run;
+  // The analysis sees only the velocity as its transducer records it, as it would see a
+  // measured record (no peeking at the model's state).
+  TimeSeries& series = run.sim.series;
+  add_measured_channels(series, run.scenario.transducer, run.scenario.ambient_pressure_Pa,
+                        run.seed);
+  run.measured_v = series.channel("v_measured").values;
   return run;
 }
 

@@ -22,17 +22,19 @@ ModelLyapunovOptions ModelExponentSpec::options(double duration_s) const {
 std::vector<std::string> SweepSpec::warnings() const {
   std::vector<std::string> w;
   const VariationParams& v = base.variation;
-  const bool gridded = std::any_of(axes.begin(), axes.end(), [](const GridAxis& a) {
-    return a.key.starts_with("variation.");
+  // What differs from repeat to repeat: the variation and the analysed velocity's noise.
+  const char* const noise_key = "transducer.velocity_noise_mm_per_s";
+  const bool gridded = std::any_of(axes.begin(), axes.end(), [&](const GridAxis& a) {
+    return a.key.starts_with("variation.") || a.key == noise_key;
   });
   if (repeats > 1 && v.friction_rel_sd == 0.0 && v.texture_rel == 0.0 &&
-      v.sensor_noise_m_per_s == 0.0 && !gridded) {
+      base.transducer.velocity.noise_m_per_s == 0.0 && !gridded) {
     w.push_back(fmt::format(
         "the {} repeats of each point are identical copies: variation.friction_rel_sd, "
-        "variation.texture_rel and variation.sensor_noise_mm_per_s are all 0, so every "
+        "variation.texture_rel and {} are all 0, so every "
         "incidence is 0 or 1. The report's maps (reproduce) use --set "
         "variation.friction_rel_sd=0.03 --set variation.texture_rel=0.02; or use --repeats 1",
-        repeats));
+        repeats, noise_key));
   }
   for (const auto& n : scenario_notes(base)) w.push_back(n);
   return w;

@@ -11,6 +11,7 @@
 #include "pneumachaos/model/cylinder.hpp"
 #include "pneumachaos/model/friction.hpp"
 #include "pneumachaos/model/supply_line.hpp"
+#include "pneumachaos/model/transducer.hpp"
 #include "pneumachaos/model/valve_flow.hpp"
 
 namespace pneumachaos {
@@ -54,12 +55,12 @@ struct LoadParams {
 };
 
 /// Run-to-run and seal-to-seal variation (docs/model.md, "Friction"; docs/sweep.md): what makes repeated runs of a
-/// virtual rig differ as the paper's five measurements per point did. All zero: no variation.
+/// virtual rig differ as the paper's five measurements per point did. All zero: no variation
+/// (the transducers' noise, Scenario::transducer, also differs from run to run).
 struct VariationParams {
   double friction_rel_sd = 0.0;  ///< relative sd of Fc, Fs, B, vs, sigma0, sigma1 per run
   double texture_rel = 0.0;      ///< relative amplitude of the friction texture along the bore
   double texture_wavelength_m = 0.02;  ///< typical wavelength of the texture
-  double sensor_noise_m_per_s = 0.0;   ///< sd of white noise added to the sampled velocity
 };
 
 enum class ChamberModel {
@@ -105,6 +106,7 @@ struct Scenario {
   VariationParams variation;
   ThermalParams thermal;
   SupplyLineParams supply_line;  ///< off by default: the ideal supply of eqs. (2)-(3)
+  TransducerParams transducer;   ///< ideal by default: the records are the sampled signals
   RunParams run;
 
   [[nodiscard]] double supply_pressure_Pa() const { return ambient_pressure_Pa + supply_gauge_Pa; }

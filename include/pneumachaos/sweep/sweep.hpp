@@ -111,14 +111,15 @@ struct RunRecord {
 RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat);
 
 /// One run as the sweep sees it: the point's scenario with the run's seeded variation, its
-/// simulation, and the velocity the analysis judges (with the seeded transducer noise).
-/// Throws Error for a point whose parameters are invalid.
+/// simulation with the measured channels (v_measured, P1_measured, P2_measured: through the
+/// scenario's transducers, noise seeded by the run's seed), and the velocity the analysis
+/// judges, v_measured. Throws Error for a point whose parameters are invalid.
 struct SweepRun {
   std::size_t point = 0, repeat = 0;
   std::uint64_t seed = 0;
   Scenario scenario;
   SimulationResult sim;
-  std::vector<double> measured_v;  ///< [m/s]; empty when the simulation failed
+  std::vector<double> measured_v;  ///< [m/s], v_measured; empty when the simulation failed
 };
 SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repeat);
 
