@@ -53,11 +53,14 @@ RegimeEvidence rests_of(const std::vector<double>& x) {
 // highest order's differences overlap five samples each, so allow 5 %.
 constexpr double kNoiseTolerance = 0.05;
 
-TEST(NoiseFloor, RecoversWhiteNoiseAloneAndOnAnOscillation) {
+TEST(NoiseFloor, RecoversWhiteNoiseOnAnOscillationAndSaysWhenItIsAllThereIs) {
   for (const double sd : {0.01, 0.3, 2.0}) {
+    // Noise alone: white at every scale, but nothing above it to judge: not separated.
     const NoiseFloor alone = estimate_noise_floor(add_noise(std::vector<double>(kSamples), sd, 3));
-    EXPECT_TRUE(alone.resolved) << sd;
-    EXPECT_NEAR(alone.sd, sd, kNoiseTolerance * sd);
+    EXPECT_TRUE(alone.dominates) << sd;
+    EXPECT_FALSE(alone.resolved) << sd;
+    EXPECT_EQ(alone.sd, 0.0);
+    EXPECT_NEAR(alone.bound, sd, kNoiseTolerance * sd);
     const NoiseFloor on_tone = estimate_noise_floor(add_noise(tone(10.0, 100.0 * sd), sd, 4));
     EXPECT_TRUE(on_tone.resolved) << sd;
     EXPECT_NEAR(on_tone.sd, sd, kNoiseTolerance * sd);
@@ -88,16 +91,17 @@ TEST(NoiseFloor, NoisyRestsKeepTheStickSlipFlag) {
 }
 
 TEST(NoiseFloor, RestsAreNotJudgedWhereTheNoiseFillsTheBand) {
-  // White noise alone would "rest" all the time in a band widened by 3.5 sigma; so would a
-  // stick-slip record whose noise is 3 % of its swing, where the band reaches 11.5 % of it.
-  const auto noise = add_noise(std::vector<double>(kSamples), 1.0, 8);
-  RegimeEvidence e = rests_of(noise);
-  EXPECT_FALSE(e.rests_above_noise);
-  EXPECT_FALSE(rests_like_stick_slip(e));
-  EXPECT_EQ(e.rest_intervals, 0u);
-  e = rests_of(add_noise(slips_and_rests(0.3), 0.03 * 0.3, 5));
+  // A stick-slip record whose noise is 3 % of its swing: the widened band reaches 11.5 % of
+  // it, where white noise alone would "rest" all the time.
+  const RegimeEvidence e = rests_of(add_noise(slips_and_rests(0.3), 0.03 * 0.3, 5));
   EXPECT_FALSE(e.rests_above_noise);
   EXPECT_GT(e.rest_level, VerdictOptions{}.max_rest_band * 0.3);
+}
+
+TEST(NoiseFloor, WhiteNoiseReadAsAVelocityDoesNotRest) {
+  for (const unsigned seed : {8u, 9u, 10u}) {
+    EXPECT_FALSE(rests_like_stick_slip(rests_of(add_noise(std::vector<double>(kSamples), 1.0, seed))));
+  }
 }
 
 TEST(NoiseFloor, ANoisyOscillationThroughZeroDoesNotRest) {

@@ -110,6 +110,11 @@ std::string noise_floor_line(const AnalysisResult& r) {
         "judged above it\n",
         f.sd, 100.0 * f.sd / r.standard_deviation);
   }
+  if (f.dominates) {
+    return fmt::format("noise floor: none separated (the smallest scales are white, at {:.3g}, "
+                       "but that is most of the record)\n",
+                       f.bound);
+  }
   return fmt::format(
       "noise floor: none resolved (the smallest scales are the signal's; any "
       "white noise is below {:.3g})\n",
@@ -121,6 +126,7 @@ nlohmann::json noise_floor_json(const AnalysisResult& r, const std::string& unit
   return {{"sd", number(f.sd)},
           {"bound", number(f.bound)},
           {"resolved", f.resolved},
+          {"dominates", f.dominates},
           {"by_order", f.by_order},
           {"unit", unit},
           {"method",

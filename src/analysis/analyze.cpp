@@ -132,7 +132,6 @@ void describe_record(std::span<const double> x, const AnalysisOptions& o, Analys
   e.last_half_std = standard_deviation(last);
   e.rests_judged = o.velocity;
   r.noise = estimate_noise_floor(x);
-  e.noise_sd = r.noise.sd;
   if (o.velocity) rest_statistics(x, o.verdict, r.noise.sd, e);
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "analysis/series_statistics.hpp"
+
 namespace pneumachaos {
 namespace {
 
@@ -40,7 +42,9 @@ NoiseFloor estimate_noise_floor(std::span<const double> x) {
   }
   f.bound = *std::min_element(f.by_order.begin(), f.by_order.end());
   const double last = f.by_order.back(), before = f.by_order[f.by_order.size() - 2];
-  f.resolved = before > 0.0 && last >= NoiseFloor::kResolvedRatio * before;
+  const bool white = before > 0.0 && last >= NoiseFloor::kResolvedRatio * before;
+  f.dominates = white && last > NoiseFloor::kMaxShareOfStd * standard_deviation(x);
+  f.resolved = white && !f.dominates;
   f.sd = f.resolved ? last : 0.0;
   return f;
 }

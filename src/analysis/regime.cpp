@@ -275,17 +275,17 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     v.stick_slip = note(false, fmt::format("stick-slip: not judged: the noise floor {:.3g} widens "
                                            "the rest band to {:.3g}, more than {} x max|x|: "
                                            "rests cannot be told from the noise",
-                                           e.noise_sd, e.rest_level, o.max_rest_band));
+                                           e.rest_noise_sd, e.rest_level, o.max_rest_band));
   } else if (e.rests_judged) {
     v.stick_slip =
         note(rests_like_stick_slip(e, o),
              fmt::format(
                  "stick-slip: {} flat rest intervals of >= {} samples at |x| <= {:.4g} "
                  "({} x max|x|{}) (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
-                 e.rest_intervals, o.min_rest_samples_at(e.noise_sd), e.rest_level, o.rest_fraction,
-                 e.noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g}; without a trend "
+                 e.rest_intervals, o.min_rest_samples_at(e.rest_noise_sd), e.rest_level, o.rest_fraction,
+                 e.rest_noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g}; without a trend "
                                                 "and within {} x the noise about zero",
-                                                o.rest_noise_sigmas, e.noise_sd, o.rest_max_rms)
+                                                o.rest_noise_sigmas, e.rest_noise_sd, o.rest_max_rms)
                                   : std::string(),
                  o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));
   } else {

@@ -54,11 +54,16 @@ bool rests_under_noise(std::span<const double> x, std::size_t first, std::size_t
 
 }  // namespace
 
-void rest_statistics(std::span<const double> x, const VerdictOptions& o, double noise_sd,
+void rest_statistics(std::span<const double> x, const VerdictOptions& o, double record_noise_sd,
                      RegimeEvidence& e) {
   double max_abs = 0.0;
   for (double v : x) max_abs = std::max(max_abs, std::abs(v));
   const double clean_level = o.rest_fraction * max_abs;
+  // Noise whose range over a rest (about 6 sigma for ten samples) fits in the clean rule's
+  // spread allowance of half the band does not break that rule: the clean rule stands (a
+  // 12-bit converter's rounding, a record's last digits).
+  const double noise_sd = record_noise_sd > clean_level / 12.0 ? record_noise_sd : 0.0;
+  e.rest_noise_sd = noise_sd;
   const double noisy_band = o.rest_noise_sigmas * noise_sd;
   const RestBounds b{.level = clean_level + noisy_band,
                      .spread = 0.5 * clean_level + 2.0 * noisy_band,

@@ -15,8 +15,9 @@ namespace pneumachaos {
 /// the spread allowance by the band's noisy width, and each run must also be the noise about
 /// zero: no trend (its least-squares change within the clean allowance plus
 /// o.rest_trend_sigmas standard errors of the noise's), an RMS about zero within
-/// o.rest_max_rms x noise_sd, and at least o.min_rest_samples_in_noise samples. noise_sd = 0
-/// is the clean rule exactly. Where the widened band exceeds o.max_rest_band x max|x|, no rest
+/// o.rest_max_rms x noise_sd, and at least o.min_rest_samples_in_noise samples. noise_sd = 0,
+/// or noise small enough for the clean rule's spread allowance (sd within a twelfth of the
+/// clean band), is the clean rule exactly; e.rest_noise_sd says which. Where the widened band exceeds o.max_rest_band x max|x|, no rest
 /// is counted and e.rests_above_noise is false.
 void rest_statistics(std::span<const double> x, const VerdictOptions& o, double noise_sd,
                      RegimeEvidence& e);

@@ -17,8 +17,13 @@ struct NoiseFloor {
   double sd = 0.0;
   /// The smallest estimate over the orders: the white noise is at most this.
   double bound = 0.0;
-  /// The two highest orders agree (within kResolvedRatio): white noise dominates there.
+  /// The two highest orders agree (within kResolvedRatio): white noise dominates there, and
+  /// it is at most kMaxShareOfStd of the record's sd.
   bool resolved = false;
+  /// The smallest scales are white, but the "noise" is most of the record: white noise
+  /// itself, or a map's alternation at the Nyquist frequency, which differences cannot tell
+  /// from noise. No noise is then separated from the motion (sd 0).
+  bool dominates = false;
   /// sigma_k for k = 1 .. kOrders (robust: 1.4826 x the median absolute deviation).
   std::vector<double> by_order;
 
@@ -27,6 +32,8 @@ struct NoiseFloor {
   /// smooth signal sampled at 10 or more points per period falls by a factor 0.4 or more
   /// per order.
   static constexpr double kResolvedRatio = 0.85;
+  /// Noise of a third of the record's sd leaves little motion above it to judge.
+  static constexpr double kMaxShareOfStd = 1.0 / 3.0;
 };
 
 /// Estimates the record's white noise floor; x needs more than kOrders samples (else all 0).

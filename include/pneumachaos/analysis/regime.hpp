@@ -98,7 +98,9 @@ struct RegimeEvidence {
   double mean = 0.0, range = 0.0, last_half_std = 0.0, last_half_mean = 0.0;
   /// Rests are looked for only in a velocity, where zero means rest (AnalysisOptions::velocity).
   bool rests_judged = true;
-  double noise_sd = 0.0;    ///< the record's white noise (0: none resolved)
+  /// The record's white noise the rests were judged with: 0 where none is resolved or it is
+  /// too small to break the clean rule (rest_statistics).
+  double rest_noise_sd = 0.0;
   double rest_level = 0.0;  ///< the band |x| <= rest_level a rest stays in
   /// The band is narrow enough to tell rests from the noise (VerdictOptions::max_rest_band).
   bool rests_above_noise = true;
