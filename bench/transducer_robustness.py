@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""The verdict through a transducer: rig records judged clean and corrupted, side by side.
+
+Usage:
+    python3 bench/transducer_robustness.py PNEUMACHAOS OUT_DIR [--surrogates N]
+
+Three rigs (the default, the one-body rigid rig, docs/variants/frozen_light_piston.toml) at
+S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and 5 % bore texture, 30 s or
+to the stroke end (records of at least 3.2 s kept), each analysed from 2 s clean and with:
+white noise of 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation over +-0.5 m/s,
+and a first-order lag of 100 / 300 Hz (the transducer stages of docs/model.md, applied here to
+the clean velocity so the clean and corrupted records share one motion). Each corruption is
+seeded from the record's name. Prints, per corruption, how many verdicts keep the clean
+record's class, how many records not chaotic clean are called chaotic, and how many stick-slip
+flags are kept; docs/notes/analysis.md "Noise floor" gives the table. The records are kept in
+OUT_DIR and reused. About 1.5 min on two cores with --surrogates 0 (the sweep's setting).
+"""
+import argparse
+import collections
+import csv
+import json
+import math
+import os
+import subprocess
+import zlib
+
+import numpy as np
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RIGS = {'default': [], 'rigid': ['--set', 'load.coupling=rigid', '--set', 'load.mass_kg=1.5'],
+        'frozen': [os.path.join(REPO, 'docs/variants/frozen_light_piston.toml')]}
+S2 = [0.05, 0.2, 0.35, 0.5, 0.65, 1.25, 3.35]
+REPEATS = 3
+RATE_HZ = 1000.0
+
+
+def velocity(path):
+    rows = list(csv.reader(open(path)))
+    names = [h.split('[')[0] for h in rows[0]]
+    table = np.array(rows[1:], float)
+    return table[:, 0], table[:, names.index('v')]
+
+
+def lag(x, corner_Hz):
+    """First-order lag, exact for a signal linear between samples (docs/model.md)."""
+    h = 1.0 / RATE_HZ
+    tau = 1.0 / (2.0 * math.pi * corner_Hz)
+    a = math.exp(-h / tau)
+    c = tau / h * (1.0 - a)
+    y = np.empty_like(x)
+    y[0] = x[0]
+    for n in range(1, len(x)):
+        y[n] = a * y[n - 1] + (1.0 - c) * x[n] + (c - a) * x[n - 1]
+    return y
+
+
+def quantise(x, bits, full_scale=0.5):
+    step = 2.0 * full_scale / 2 ** bits
+    return np.clip(np.round(x / step) * step, -full_scale, full_scale - step)
+
+
+def corruptions(v, seed):
+    rng = np.random.default_rng(seed)
+    swing = v[2000:].max() - v[2000:].min()
+    out = {'clean': v}
+    for share in (0.005, 0.01, 0.02, 0.03):
+        out[f'noise {share:.1%}'] = v + rng.normal(0.0, share * swing, len(v))
+    for bits in (10, 12):
+        out[f'{bits} bits'] = quantise(v, bits)
+    for corner in (100, 300):
+        out[f'{corner} Hz'] = lag(v, corner)
+    return out
+
+
+def judge(cli, t, x, path, surrogates):
+    with open(path, 'w') as f:
+        f.write('t[s],v[m/s]\n')
+        f.writelines(f'{a:.6f},{b:.9g}\n' for a, b in zip(t, x))
+    done = subprocess.run([cli, 'analyze', path, '--from', '2', '--surrogates', str(surrogates),
+                           '--json', path + '.json'], capture_output=True, text=True)
+    if done.returncode != 0:
+        return 'error', False
+    verdict = json.load(open(path + '.json'))['verdict']
+    return verdict['regime'], verdict['stick_slip']
+
+
+def record(cli, out, rig, s2, repeat):
+    path = os.path.join(out, f'{rig}_{s2}_{repeat}.csv')
+    if not os.path.exists(path):
+        subprocess.run([cli, 'sweep'] + RIGS[rig] + [
+            '--grid', f'circuit.S2_mm2={s2}:{s2}:0.1', '--repeats', str(REPEATS),
+            '--set', 'variation.friction_rel_sd=0.03', '--set', 'variation.texture_rel=0.05',
+            '--set', 'run.duration_s=30', '--replay', f'0:{repeat}', '-o', path],
+            capture_output=True, check=True)
+    return velocity(path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument('cli')
+    parser.add_argument('out')
+    parser.add_argument('--surrogates', type=int, default=0)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    scratch = os.path.join(args.out, 'judged.csv')
+    tally = collections.defaultdict(lambda: [0, 0, 0, 0, 0])
+    for rig in RIGS:
+        for s2 in S2:
+            for repeat in range(REPEATS):
+                t, v = record(args.cli, args.out, rig, s2, repeat)
+                if len(v) < 3200:
+                    continue
+                seed = zlib.crc32(f'{rig}{s2}{repeat}'.encode())
+                verdicts = {name: judge(args.cli, t, x, scratch, args.surrogates)
+                            for name, x in corruptions(v, seed).items()}
+                clean, clean_flag = verdicts.pop('clean')
+                for name, (regime, flag) in verdicts.items():
+                    kept, total, false_chaos, flags, flagged = tally[name]
+                    tally[name] = [kept + (regime == clean), total + 1,
+                                   false_chaos + (regime == 'chaotic' and clean != 'chaotic'),
+                                   flags + (clean_flag and flag), flagged + clean_flag]
+    for name, (kept, total, false_chaos, flags, flagged) in tally.items():
+        print(f'{name:11s} class kept {kept}/{total}  false chaos {false_chaos}  '
+              f'stick-slip kept {flags}/{flagged}')
+
+
+if __name__ == '__main__':
+    main()
