@@ -19,5 +19,7 @@ if [ "${1:-}" = "long" ]; then
 fi
 cmake --preset fuzz "${seconds[@]}" -DPNEUMACHAOS_FUZZ_RUNS="${PNEUMACHAOS_FUZZ_RUNS:-0}" >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target fuzzers
-# The harnesses run one at a time: each uses one core, and 2-core machines also build.
-ctest --test-dir build-fuzz --output-on-failure -L "^${label}\$" -R "${PNEUMACHAOS_FUZZ_ONLY:-.}"
+# Each harness uses one core for its seconds; once the build is done they run as many at a
+# time as there are cores (each keeps its own corpus directory).
+ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)" -L "^${label}\$" \
+  -R "${PNEUMACHAOS_FUZZ_ONLY:-.}"
