@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <utility>
-#include <vector>
 
 namespace pneumachaos {
 namespace {
@@ -77,11 +75,13 @@ void rest_statistics(std::span<const double> x, const VerdictOptions& o, double 
   e.rests_above_noise = b.level <= o.max_rest_band * max_abs;
   if (!e.rests_above_noise) return;
   const std::size_t min_samples = o.min_rest_samples_at(noise_sd);
-  std::vector<std::pair<std::size_t, std::size_t>> rests;  // first sample, length
-  std::size_t first = 0, run = 0;
+  std::size_t first = 0, run = 0, at_rest = 0;
   double lo = 0.0, hi = 0.0;
   const auto close_run = [&] {
-    if (run >= min_samples && rests_under_noise(x, first, run, b)) rests.emplace_back(first, run);
+    if (run >= min_samples && rests_under_noise(x, first, run, b)) {
+      ++e.rest_intervals;
+      at_rest += run;
+    }
     run = 0;
   };
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -101,9 +101,6 @@ void rest_statistics(std::span<const double> x, const VerdictOptions& o, double 
     }
   }
   close_run();
-  std::size_t at_rest = 0;
-  for (const auto& r : rests) at_rest += r.second;
-  e.rest_intervals = rests.size();
   e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
 }
 
