@@ -46,7 +46,7 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
 }
 
 // Ctrl-C (or a TERM) during a sweep: the journal keeps every finished run, so the message says
-// how to continue, then the signal ends the process as it would have (issue 33). Only
+// how to continue, then the signal ends the process as it would have. Only
 // write(2) in the handler; an ignored SIGINT (a background job of a script) stays ignored.
 class ResumeHintOnSignal {
  public:

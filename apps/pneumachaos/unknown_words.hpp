@@ -1,5 +1,5 @@
 #pragma once
-// A mistyped command or option named as such, with the nearest known one (issue 33): CLI11
+// A mistyped command or option named as such, with the nearest known one: CLI11
 // alone reads `simulate --duraton 5` as a scenario file "5" that does not exist and
 // `simulat` as no command at all.
 

@@ -152,7 +152,7 @@ nlohmann::json seed_agreement_json(const SeedAgreement& a) {
 
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                              const std::string& unit) {
-  // The answer first (issue 33): the verdict and the exponent, then how they were reached.
+  // The answer first: the verdict and the exponent, then how they were reached.
   std::string out = fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n",
                                 regime_name(r.verdict.regime), r.verdict.chaotic ? "yes" : "no",
                                 r.verdict.stick_slip ? "yes" : "no");

@@ -156,7 +156,7 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
 
 // What the divergence curve measured. Without a linear region, a deterministic record (the
 // local-constant predictor beats the linear one) whose curve still rises gets the spread of its
-// local slopes as a wide estimate (issue 34: BurkeShaw's curve bends all the way, its slope
+// local slopes as a wide estimate (dysts's BurkeShaw: its curve bends all the way, its slope
 // falling from 3.5 to 0 /time, with the flow's exponent 2.3 inside; docs/notes/
 // exponent_validation.md) unless the verdict found it regular or steady: on a torus the
 // separation grows like a power of time, which a log curve also shows as a rise (dysts's

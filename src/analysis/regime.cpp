@@ -195,7 +195,7 @@ Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run, bool surr
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
   // concentrated spectrum and a persisting autocorrelation must both say so. A record that
   // repeats itself over most of its length is regular whatever K says: sharp relaxation
-  // edges read K ~ 0.9 (issue 34).
+  // edges read K ~ 0.9.
   const bool regular = !c.steady && !c.positive &&
                        (c.repeats || (zero_one_run ? c.regular_K : c.concentrated && c.persistent));
   // Irregular: K high; without the 0-1 test (too few points after down-sampling), a broadband
@@ -309,7 +309,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
                                "zero: surrogates with the same values are as predictable");
   }
   // "stochastic" is what the tests could establish, not where the record came from: a
-  // noise-free simulation can earn it (issue 33), so the verdict says what it means.
+  // noise-free simulation can earn it, so the verdict says what it means.
   if (v.regime == Regime::kStochastic) {
     note.info("stochastic means: irregular, and not distinguishable from linearly filtered "
               "noise by these tests; it does not say the source is random (a noise-free "

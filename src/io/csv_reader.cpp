@@ -195,7 +195,7 @@ bool same_rate(double a, double b, double jitter) { return std::abs(a - b) <= ji
 
 // A file without a header whose analysed column is the default first one, and that first
 // column rises at a constant step like a time column, is refused: analysing the clock calls
-// its ramp "periodic" (issue 33). Naming the column (--column N) settles it either way.
+// its ramp "periodic". Naming the column (--column N) settles it either way.
 void refuse_time_like_first_column(const std::vector<double>& first, const Layout& l,
                                    const std::string& origin, const CsvSeriesOptions& options) {
   if (options.column != "v" || l.names.size() < 2 || first.size() < 3) return;

@@ -75,7 +75,7 @@ KeySpec number(std::string key, std::string unit, std::string description, doubl
 
 // A number key whose range is what a pneumatic drive can physically be, not only what the
 // equations accept: a value beyond it is almost always a unit slip (250 MPa for 0.25 MPa, a
-// bore in metres) and is refused with `why`, the source of the bounds (issue 33).
+// bore in metres) and is refused with `why`, the source of the bounds.
 template <typename Ref>
 KeySpec plausible(std::string key, std::string unit, std::string description, double scale,
                   Range range, std::string why, Ref ref) {

@@ -26,7 +26,7 @@ StabilityMap stability_map(const Scenario& base, const std::vector<GridAxis>& ax
       point.error = e.what();
     } catch (const std::exception& e) {
       // A numerical breakdown at one point (Boost.Math, Eigen) marks that point; the map
-      // goes on (issue 16: one bad point used to abort the whole map).
+      // goes on.
       point.error = std::string("numerical failure: ") + e.what();
     }
     if (point.result.has_equilibrium()) {

@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive refinement of a two-axis map (issue 35, docs/sweep.md "Adaptive maps"): a coarse
+// Adaptive refinement of a two-axis map (docs/sweep.md "Adaptive maps"): a coarse
 // lattice of the grid first, then every cell whose evaluated points differ in what the map
 // shows is split, down to single grid steps. Pure: it knows points and classes, not runs.
 

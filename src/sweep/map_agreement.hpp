@@ -1,5 +1,5 @@
 #pragma once
-// How far an adaptive map is from the full grid's map of the same sweep (issue 35's
+// How far an adaptive map is from the full grid's map of the same sweep (its
 // validation): the shares of points whose classes agree, each region's area error against its
 // border's length, and the runs saved.
 

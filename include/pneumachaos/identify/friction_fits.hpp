@@ -84,7 +84,7 @@ FrictionFitOptions fit_options_for(const Scenario& scenario, const std::vector<s
 
 /// Throws RunError when fits were made and none converged (naming the first, with Ceres's
 /// reason); a fit that did not converge beside one that did is a warning, not a failure: the
-/// models that converged are reported (issue 33).
+/// models that converged are reported.
 void require_converged(const FrictionFits& fits);
 
 /// The steady friction of a fitted law at velocity v (gauge sum for pressure dependence).

@@ -10,7 +10,7 @@
 
 namespace pneumachaos {
 
-/// One policy for every output path, checked before any work (issue 33): why `path` cannot
+/// One policy for every output path, checked before any work: why `path` cannot
 /// be written as an output file, or "" when it can. It must not be a directory, and the
 /// nearest of its ancestors that exists must be a writable directory: missing directories
 /// are created when the file is written. No side effects.

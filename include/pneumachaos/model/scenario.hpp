@@ -131,7 +131,7 @@ Scenario default_scenario();
 
 /// What a user should know about a valid scenario, one sentence each (commands print them as
 /// notes): today, a cylinder other than the virtual rig's (another bore) that still carries
-/// the rig's compliant load mount, whose mode then dominates its record (issue 33).
+/// the rig's compliant load mount, whose mode then dominates its record.
 std::vector<std::string> scenario_notes(const Scenario& scenario);
 
 /// The simple rig: one rigid moving mass, Stribeck seal friction with true stiction, volumes

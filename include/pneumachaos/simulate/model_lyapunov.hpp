@@ -37,7 +37,7 @@ struct ModelLyapunovOptions {
   /// instead of failing it: the exponent and its blocks then span the time measured. A run
   /// with moving volumes has no fixed length, so a sweep measures "the rest of the stroke".
   /// On by default: the default scenario's stroke ends at 7.5 s, before 5 s of transient and
-  /// 40 s of measurement would (issue 33); false makes a stroke end fail the measurement.
+  /// 40 s of measurement would; false makes a stroke end fail the measurement.
   bool until_terminal_event = true;
   static constexpr ErrorField kTransientField{"lyapunov.transient_s", "lyapunov.transient_s"};
   static constexpr ErrorField kMeasureField{"lyapunov.measure_s", "lyapunov.measure_s"};
@@ -74,7 +74,7 @@ class Plant;
 inline constexpr double kPlantSeparationPerTolerance = 1e6;
 /// The cylinder's largest separation in the scaled norm: 1 = 10 kPa on P1, already a tenth
 /// of the pressures' swing; a larger one measures no tangent growth, and one beyond the
-/// motion reaches the stroke end before any renormalisation (issue 33).
+/// motion reaches the stroke end before any renormalisation.
 inline constexpr double kPlantMaxSeparation = 1.0;
 
 /// The cylinder's exponent from the start of a run: the plant's state scales, the separation
