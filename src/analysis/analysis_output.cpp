@@ -105,10 +105,11 @@ std::string evidence_summary(const AnalysisResult& r) {
 std::string noise_floor_line(const AnalysisResult& r) {
   const NoiseFloor& f = r.noise;
   if (f.resolved) {
-    return fmt::format(
-        "noise floor: white noise of sd {:.3g} ({:.2g} % of the std); rests are "
-        "judged above it\n",
-        f.sd, 100.0 * f.sd / r.standard_deviation);
+    return fmt::format("noise floor: white noise of sd {:.3g} ({:.2g} % of the std){}\n", f.sd,
+                       100.0 * f.sd / r.standard_deviation,
+                       r.evidence.rest_noise_sd > 0.0
+                           ? "; rests are judged above it"
+                           : "; too small to change how rests are judged");
   }
   if (f.dominates) {
     return fmt::format("noise floor: none separated (the smallest scales are white, at {:.3g}, "
