@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/rests.hpp"
+#include "analysis/series_statistics.hpp"
 #include "pneumachaos/analysis/noise_floor.hpp"
 #include "pneumachaos/analysis/regime.hpp"
 
@@ -91,11 +92,28 @@ TEST(NoiseFloor, NoisyRestsKeepTheStickSlipFlag) {
 }
 
 TEST(NoiseFloor, RestsAreNotJudgedWhereTheNoiseFillsTheBand) {
-  // A stick-slip record whose noise is 3 % of its swing: the widened band reaches 11.5 % of
-  // it, where white noise alone would "rest" all the time.
-  const RegimeEvidence e = rests_of(add_noise(slips_and_rests(0.3), 0.03 * 0.3, 5));
+  // A stick-slip record whose noise is half its swing: the band on the running mean over 20
+  // samples, 1 % of max|x| + 3.5 x the noise / sqrt(20), exceeds a tenth of max|x| (itself
+  // widened by the noise), where white noise alone would "rest" all the time.
+  const auto x = add_noise(slips_and_rests(0.3), 0.5 * 0.3, 5);
+  RegimeEvidence e;
+  rest_statistics(x, VerdictOptions{}, 0.5 * 0.3, e);
   EXPECT_FALSE(e.rests_above_noise);
   EXPECT_GT(e.rest_level, VerdictOptions{}.max_rest_band * 0.3);
+}
+
+TEST(NoiseFloor, TheRunningMeanKeepsTheRestsWhoseEdgesRamp) {
+  // Rests entered and left along a slow ramp (a 1 Hz half sine, 0.3 m/s: the first and last
+  // few ms of every slip lie inside the noisy band): a run that took in the ramps would fail
+  // the trend test; on the running mean the runs end where the ramps leave the narrower band.
+  std::vector<double> x(kSamples);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double phase = std::fmod(static_cast<double>(i) / kRate_Hz, 1.0);
+    x[i] = phase < 0.5 ? 0.3 * std::sin(2.0 * std::numbers::pi * phase) : 0.0;
+  }
+  const RegimeEvidence e = rests_of(add_noise(x, 0.02 * 0.3, 7));
+  EXPECT_TRUE(rests_like_stick_slip(e));
+  EXPECT_GT(e.rest_share, 0.45);
 }
 
 TEST(NoiseFloor, WhiteNoiseReadAsAVelocityDoesNotRest) {
@@ -117,16 +135,28 @@ TEST(NoiseFloor, ANoisyOscillationThroughZeroDoesNotRest) {
 }
 
 TEST(NoiseFloor, TheNoiseConditionsAreWhatRejectThePassages) {
-  // A slow noisy tone with the trend and the RMS conditions made toothless: its passages
-  // through the widened band then count as rests, which is why the conditions are there
-  // (with them: the test above).
-  const auto x = add_noise(tone(1.0, 0.1), 0.01 * 0.2, 6);
+  // A slow tone (0.1 Hz over 40 s) creeps through the clean band: the clean rule counts
+  // 0.6 % of it at rest. With noise of 1 % of its swing the rule on the running mean counts
+  // about as much; with the trend and the RMS conditions made toothless it counts the noisy
+  // passages through the wider band too, more than twice as much, which is why the
+  // conditions are there.
+  std::vector<double> slow(4 * kSamples);
+  for (std::size_t i = 0; i < slow.size(); ++i) {
+    slow[i] = 0.1 * std::sin(2.0 * std::numbers::pi * 0.1 * static_cast<double>(i) / kRate_Hz);
+  }
+  RegimeEvidence clean;
+  rest_statistics(slow, VerdictOptions{}, 0.0, clean);
+  ASSERT_GT(clean.rest_share, 0.0);
+  const auto x = add_noise(slow, 0.01 * 0.2, 6);
+  const double noise_sd = estimate_noise_floor(x).sd;
+  RegimeEvidence e;
+  rest_statistics(x, VerdictOptions{}, noise_sd, e);
+  EXPECT_NEAR(e.rest_share, clean.rest_share, 0.3 * clean.rest_share);
   VerdictOptions loose;
   loose.rest_trend_sigmas = 1e6;
   loose.rest_max_rms = 1e6;
-  RegimeEvidence e;
-  rest_statistics(x, loose, estimate_noise_floor(x).sd, e);
-  EXPECT_TRUE(rests_like_stick_slip(e, loose)) << e.rest_share;
+  rest_statistics(x, loose, noise_sd, e);
+  EXPECT_GT(e.rest_share, 2.0 * clean.rest_share);
 }
 
 // An AR(1) process x' = 0.99 x + e read as a velocity: a noise-driven motion whose
@@ -153,6 +183,20 @@ TEST(NoiseFloor, ANoiseDrivenWanderThroughZeroDoesNotRest) {
   RegimeEvidence e;
   rest_statistics(x, short_rests, estimate_noise_floor(x).sd, e);
   EXPECT_GT(e.rest_intervals, 2u);
+}
+
+}  // namespace
+}  // namespace pneumachaos
+
+namespace pneumachaos {
+namespace {
+
+TEST(NoiseFloor, MaximaAboveTheNoiseSpaceAtTheOrbit) {
+  // A 10 Hz tone at 1 kHz (100 samples an orbit) with white noise of 0.2: the quarter-std
+  // hysteresis (0.18) counts the noise's wiggles as maxima; six noise sd do not.
+  const auto x = add_noise(tone(10.0, 1.0), 0.2, 11);
+  EXPECT_LT(mean_maxima_spacing(x), 50.0);
+  EXPECT_NEAR(mean_maxima_spacing(x, 0.2), 100.0, 2.0);
 }
 
 }  // namespace

@@ -394,3 +394,51 @@ TEST(Regime, CurveRisingAllAlongWithoutAStraightStretchCountsWithTheZeroOneTest)
 
 }  // namespace
 }  // namespace pneumachaos
+
+namespace pneumachaos {
+namespace {
+
+// A noisy cycle: its divergence curve finds a weak rise over a few orbits (the noise's phase
+// diffusion), while the 0-1 test's upper quartile, the spectrum and the autocorrelation all
+// read it regular: periodic. Take away any one of the three, or the noise, and the rise stands
+// (not periodic).
+TEST(Regime, ADivergenceEveryRegularitySignContradictsIsANoisyCyclesDiffusion) {
+  RegimeEvidence e = deterministic_evidence(0.22, 0.13, 0.40);
+  e.prediction_nonlinear = 0.64;  // not deterministic: the rise alone is the question
+  e.surrogate_rejected = e.surrogate_more_predictable = false;
+  e.lyapunov_found = true;
+  e.lyapunov_per_s = 2.7;
+  e.lyapunov_slope_uncertainty_per_s = 0.86;
+  e.late_acf = 0.54;
+  e.broadband_share = 0.02;
+  e.noise_sd = 0.003;
+  const Verdict v = decide_regime(e);
+  EXPECT_EQ(v.regime, Regime::kPeriodic) << evidence_text(v);
+  EXPECT_NE(evidence_text(v).find("phase diffusion"), std::string::npos);
+  RegimeEvidence clean = e;  // no noise to diffuse: the rise stands
+  clean.noise_sd = 0.0;
+  EXPECT_NE(decide_regime(clean).regime, Regime::kPeriodic);
+  RegimeEvidence broadband = e;
+  broadband.broadband_share = 0.5;
+  EXPECT_NE(decide_regime(broadband).regime, Regime::kPeriodic);
+  RegimeEvidence dying = e;
+  dying.late_acf = 0.2;
+  EXPECT_NE(decide_regime(dying).regime, Regime::kPeriodic);
+  RegimeEvidence spread_K = e;
+  spread_K.zero_one_q75 = 0.6;
+  EXPECT_NE(decide_regime(spread_K).regime, Regime::kPeriodic);
+}
+
+// The same noisy tone read whole: white noise of 10 % of its std adds 0.1 of the attractor's
+// size to every window's mismatch, and the test of "small" is judged above it.
+TEST(Regime, ANoisyToneStillRepeatsItself) {
+  const auto x = sine(10000, 10.0, 1000.0, 0.1 * std::sqrt(0.5));
+  const AnalysisResult r = analyze_series(x, 1000.0);
+  ASSERT_GT(r.noise.sd, 0.0);
+  EXPECT_TRUE(r.evidence.repetition.repeats) << evidence_text(r.verdict);
+  EXPECT_GT(r.evidence.repetition.max_mismatch, VerdictOptions{}.repetition.max_mismatch);
+  EXPECT_EQ(r.verdict.regime, Regime::kPeriodic);
+}
+
+}  // namespace
+}  // namespace pneumachaos

@@ -132,6 +132,7 @@ void describe_record(std::span<const double> x, const AnalysisOptions& o, Analys
   e.last_half_std = standard_deviation(last);
   e.rests_judged = o.velocity;
   r.noise = estimate_noise_floor(x);
+  e.noise_sd = r.noise.sd;
   if (o.velocity) rest_statistics(x, o.verdict, r.noise.sd, e);
 }
 
@@ -152,6 +153,16 @@ void choose_embedding(std::span<const double> x, double rate_Hz, const AnalysisO
   r.theiler = o.theiler > 0 || o.theiler_given ? o.theiler : std::max(tau, zero_lag);
   r.dimension =
       o.dimension > 0 ? DimensionChoice{o.dimension, {}, {}} : choose_dimension(x, tau, r.theiler);
+}
+
+// White noise of sd s adds s / std to the windows' RMS mismatch relative to the attractor's
+// size (sqrt(2) s over sqrt(2) std), in quadrature with the motion's own: "small" is judged
+// above that, so a noisy cycle still repeats itself (docs/notes/analysis.md "Noise floor").
+SelfRepetitionOptions repetition_above_noise(SelfRepetitionOptions o, const AnalysisResult& r) {
+  if (r.noise.sd > 0.0 && r.standard_deviation > 0.0) {
+    o.max_mismatch = std::hypot(o.max_mismatch, r.noise.sd / r.standard_deviation);
+  }
+  return o;
 }
 
 // What the divergence curve measured. Without a linear region, a deterministic record (the
@@ -185,17 +196,31 @@ void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResul
       d.local_slopes.high * rate_Hz);
 }
 
+// The orbit's scales for the divergence curve and the self-repetition windows. Under a
+// resolved noise floor the maxima are counted above the noise (mean_maxima_spacing with its
+// sd): the noise's own wiggles made a rig's noisy cycle of 67 ms read 21 ms, its divergence
+// curve was read over a third of an orbit and its windows no longer repeated
+// (docs/notes/analysis.md "Noise floor"). The embedding and the 0-1 test keep the clean count.
+struct OrbitScales {
+  double maxima_spacing = 0.0, period = 0.0;
+};
+OrbitScales orbit_above_noise(std::span<const double> x, const AnalysisResult& r) {
+  if (!(r.noise.sd > 0.0)) return {r.maxima_spacing_samples, r.period_samples};
+  const double spacing = mean_maxima_spacing(x, r.noise.sd);
+  return {spacing, orbital_period(spacing, r.lines, x.size())};
+}
+
 void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOptions& o,
-                   AnalysisResult& r) {
+                   const OrbitScales& orbit, AnalysisResult& r) {
   DivergenceOptions d;
   d.dimension = r.dimension.dimension;
   d.delay = r.delay.delay;
   d.theiler = r.theiler;
-  d.typical_period = static_cast<std::size_t>(std::lround(r.period_samples));
+  d.typical_period = static_cast<std::size_t>(std::lround(orbit.period));
   // The slope spacing stays at half the maxima spacing: the curve carries the fastest
   // oscillation the maxima follow, and a linear region can be shorter than one orbit.
   d.slope_spacing =
-      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(r.maxima_spacing_samples)) / 2);
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(orbit.maxima_spacing)) / 2);
   r.divergence = divergence_exponent(x, rate_Hz, d);
   if (r.divergence.found_linear_region) {
     r.exponent_spread = exponent_spread(x, rate_Hz, d, r.divergence, o.embedding_spread);
@@ -245,9 +270,11 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
   choose_embedding(x, rate_Hz, o, r);
   const SeededTestSetup seeded = run_evidence_tests(x, o, r);
-  run_exponents(x, rate_Hz, o, r);
-  e.repetition =
-      self_repetition(x, rate_Hz, r.period_samples, o.verdict.repetition, r.acf.lag_products);
+  const OrbitScales orbit = orbit_above_noise(x, r);
+  run_exponents(x, rate_Hz, o, orbit, r);
+  e.repetition = self_repetition(x, rate_Hz, orbit.period,
+                                 repetition_above_noise(o.verdict.repetition, r),
+                                 r.acf.lag_products);
   r.poincare = poincare_section(x, r.delay.delay, rate_Hz);
   r.maxima_map = successive_maxima(x);
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));

@@ -16,6 +16,7 @@ struct Criteria {
   bool noise_like = false;  ///< surrogates run: null kept; else: prediction ratio not low
   bool persistent = false, concentrated = false, second_line = false;
   bool repeats = false;  ///< the record repeats itself over most of its length
+  bool noisy = false;    ///< a white noise floor is resolved
 };
 
 class Notes {
@@ -87,9 +88,9 @@ void note_repetition(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
   c.repeats = s.repeats;
   const std::string found = fmt::format(
       "record repeats itself: at lag {:.4g} s (drifting {:+.3g} s) the one-period windows' "
-      "mismatch stays <= {} of the attractor's size over {:.3g} s = {:.0f} % of the record "
+      "mismatch stays <= {:.3g} of the attractor's size over {:.3g} s = {:.0f} % of the record "
       "(need {:.0f} %; largest {:.3g}; at the fixed lag over the whole overlap {:.3g})",
-      s.lag_s, s.lag_drift_s, o.repetition.max_mismatch, s.stretch_s, 100.0 * s.share,
+      s.lag_s, s.lag_drift_s, s.max_mismatch, s.stretch_s, 100.0 * s.share,
       100.0 * o.repetition.min_share, s.stretch_max_mismatch, s.mismatch);
   if (!c.positive) {
     note(s.repeats, found);
@@ -190,13 +191,23 @@ void note_regularity(const RegimeEvidence& e, const VerdictOptions& o, Notes& no
 // zero of such a process (cubed low-passed noise lingers there), not a body at rest.
 bool rests_in_noise(bool stochastic, bool surrogate_run) { return surrogate_run && stochastic; }
 
+// A divergence that every sign of regularity contradicts — the 0-1 test's upper quartile low,
+// a concentrated spectrum and a persisting autocorrelation — is the phase diffusion of a noisy
+// cycle: noise moves neighbours along the cycle, and their separation creeps up over a few
+// orbits (docs/notes/analysis.md "Noise floor").
+// Only a record with a resolved noise floor has a noise to diffuse: on a clean record such a
+// rise stays undetermined.
+bool divergence_contradicted(const Criteria& c) {
+  return c.noisy && c.positive && c.clearly_regular && c.concentrated && c.persistent;
+}
+
 Regime combine(const Criteria& c, const Verdict& v, bool zero_one_run, bool surrogate_run) {
   const bool chaotic = !c.steady && c.positive && c.deterministic && !c.clearly_regular;
   // The 0-1 test tells regular from irregular motion on any waveform; without it, a
   // concentrated spectrum and a persisting autocorrelation must both say so. A record that
   // repeats itself over most of its length is regular whatever K says: sharp relaxation
   // edges read K ~ 0.9.
-  const bool regular = !c.steady && !c.positive &&
+  const bool regular = !c.steady && (!c.positive || divergence_contradicted(c)) &&
                        (c.repeats || (zero_one_run ? c.regular_K : c.concentrated && c.persistent));
   // Irregular: K high; without the 0-1 test (too few points after down-sampling), a broadband
   // spectrum and a dying autocorrelation, but only where the surrogates calibrated the null.
@@ -245,7 +256,8 @@ std::string verdict_rule(const VerdictOptions&) {
          "NOT (0-1 K's upper quartile low, where run); else stick-slip if flagged (unless "
          "stochastic with the surrogates run: rests of a linear process seen through a static "
          "transform); else "
-         "steady; else regular = no exponential divergence AND (the record repeats itself OR 0-1 K "
+         "steady; else regular = (no exponential divergence OR, with a noise floor resolved, 0-1 K's upper "
+         "quartile low AND a concentrated spectrum AND a persisting autocorrelation) AND (the record repeats itself OR 0-1 K "
          "low, where run; else a concentrated spectrum AND a persisting autocorrelation): "
          "quasi-periodic with a second incommensurate line, periodic without; else stochastic = "
          "NOT deterministic AND (surrogates keep the linear null, where run) AND (0-1 K high, "
@@ -271,6 +283,7 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     return v;
   }
   Criteria c;
+  c.noisy = e.noise_sd > 0.0;
   if (e.rests_judged && !e.rests_above_noise) {
     v.stick_slip = note(false, fmt::format("stick-slip: not judged: the noise floor {:.3g} widens "
                                            "the rest band to {:.3g}, more than {} x max|x|: "
@@ -283,9 +296,13 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
                  "stick-slip: {} flat rest intervals of >= {} samples at |x| <= {:.4g} "
                  "({} x max|x|{}) (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
                  e.rest_intervals, o.min_rest_samples_at(e.rest_noise_sd), e.rest_level, o.rest_fraction,
-                 e.rest_noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g}; without a trend "
-                                                "and within {} x the noise about zero",
-                                                o.rest_noise_sigmas, e.rest_noise_sd, o.rest_max_rms)
+                 e.rest_noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g} / sqrt({}), on "
+                                                "the running mean over {} samples; without a "
+                                                "trend and within {} x the noise about zero",
+                                                o.rest_noise_sigmas, e.rest_noise_sd,
+                                                o.min_rest_samples_at(e.rest_noise_sd),
+                                                o.min_rest_samples_at(e.rest_noise_sd),
+                                                o.rest_max_rms)
                                   : std::string(),
                  o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));
   } else {
@@ -301,6 +318,10 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
     note_zero_one(e, o, note, c);
     note_determinism(e, o, note, c);
     note_regularity(e, o, note, c);
+  }
+  if (!c.steady && divergence_contradicted(c)) {
+    note.info("the divergence is not taken: the 0-1 test's upper quartile, the spectrum and the "
+              "autocorrelation all read the motion regular (a noisy cycle's phase diffusion)");
   }
   v.regime = combine(c, v, e.zero_one_run, e.surrogate_run);
   v.chaotic = v.regime == Regime::kChaotic;

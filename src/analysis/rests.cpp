@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 namespace pneumachaos {
 namespace {
@@ -50,10 +52,29 @@ bool rests_under_noise(std::span<const double> x, std::size_t first, std::size_t
          run.rms <= b.clean_change + b.max_rms * b.noise_sd;
 }
 
-}  // namespace
+// The mean of x over a window of n samples centred on each sample (shorter at the ends).
+std::vector<double> running_mean(std::span<const double> x, std::size_t n) {
+  std::vector<double> prefix(x.size() + 1, 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) prefix[i + 1] = prefix[i] + x[i];
+  std::vector<double> out(x.size());
+  const std::size_t half = n / 2;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t lo = i >= half ? i - half : 0;
+    const std::size_t hi = std::min(x.size(), lo + n);
+    out[i] = (prefix[hi] - prefix[lo]) / static_cast<double>(hi - lo);
+  }
+  return out;
+}
 
-void rest_statistics(std::span<const double> x, const VerdictOptions& o, double record_noise_sd,
-                     RegimeEvidence& e) {
+// The rests of x as runs [first, first + n), with the bounds they were judged by.
+struct Rests {
+  RestBounds bounds;
+  double raw_level = 0.0;  ///< the band on the raw samples, which decides `judged`
+  bool judged = false;     ///< false: the raw band is too wide to tell a rest from the noise
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+};
+
+Rests find_rests(std::span<const double> x, const VerdictOptions& o, double record_noise_sd) {
   double max_abs = 0.0;
   for (double v : x) max_abs = std::max(max_abs, std::abs(v));
   const double clean_level = o.rest_fraction * max_abs;
@@ -61,31 +82,37 @@ void rest_statistics(std::span<const double> x, const VerdictOptions& o, double 
   // spread allowance of half the band does not break that rule: the clean rule stands (a
   // 12-bit converter's rounding, a record's last digits).
   const double noise_sd = record_noise_sd > clean_level / 12.0 ? record_noise_sd : 0.0;
-  e.rest_noise_sd = noise_sd;
-  const double noisy_band = o.rest_noise_sigmas * noise_sd;
-  const RestBounds b{.level = clean_level + noisy_band,
-                     .spread = 0.5 * clean_level + 2.0 * noisy_band,
-                     .clean_change = 0.5 * clean_level,
-                     .noise_sd = noise_sd,
-                     .trend_sigmas = o.rest_trend_sigmas,
-                     .max_rms = o.rest_max_rms};
-  e.rest_level = b.level;
-  e.rest_intervals = 0;
-  e.rest_share = 0.0;
-  e.rests_above_noise = b.level <= o.max_rest_band * max_abs;
-  if (!e.rests_above_noise) return;
-  const std::size_t min_samples = o.min_rest_samples_at(noise_sd);
-  std::size_t first = 0, run = 0, at_rest = 0;
+  // Under noise the band is judged on the running mean over a shortest rest, whose noise is
+  // sqrt(window) times smaller: a rest's edges, where the body speeds up out of it, then stay
+  // outside the run instead of failing its trend test.
+  const std::size_t window = o.min_rest_samples_at(noise_sd);
+  const std::vector<double> smooth = noise_sd > 0.0 ? running_mean(x, window)
+                                                    : std::vector<double>(x.begin(), x.end());
+  const double noisy_band =
+      o.rest_noise_sigmas * noise_sd / std::sqrt(static_cast<double>(window));
+  Rests r;
+  // Whether a rest can be told from the noise at all is the single sample's question: where
+  // the raw noise's band exceeds max_rest_band, a noise-driven wander lingers in it (a noisy
+  // Lorenz x passing zero), and no running mean makes it a rest.
+  r.raw_level = clean_level + o.rest_noise_sigmas * noise_sd;
+  r.judged = r.raw_level <= o.max_rest_band * max_abs;
+  r.bounds = RestBounds{.level = clean_level + noisy_band,
+                        .spread = 0.5 * clean_level + 2.0 * noisy_band,
+                        .clean_change = 0.5 * clean_level,
+                        .noise_sd = noise_sd,
+                        .trend_sigmas = o.rest_trend_sigmas,
+                        .max_rms = o.rest_max_rms};
+  const RestBounds& b = r.bounds;
+  if (!r.judged) return r;
+  const std::size_t min_samples = window;
+  std::size_t first = 0, run = 0;
   double lo = 0.0, hi = 0.0;
   const auto close_run = [&] {
-    if (run >= min_samples && rests_under_noise(x, first, run, b)) {
-      ++e.rest_intervals;
-      at_rest += run;
-    }
+    if (run >= min_samples && rests_under_noise(x, first, run, b)) r.runs.emplace_back(first, run);
     run = 0;
   };
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double v = x[i];
+    const double v = smooth[i];
     const bool inside = std::abs(v) <= b.level;
     if (inside && run > 0 && std::max(hi, v) - std::min(lo, v) <= b.spread) {
       lo = std::min(lo, v);
@@ -101,6 +128,20 @@ void rest_statistics(std::span<const double> x, const VerdictOptions& o, double 
     }
   }
   close_run();
+  return r;
+}
+
+}  // namespace
+
+void rest_statistics(std::span<const double> x, const VerdictOptions& o, double record_noise_sd,
+                     RegimeEvidence& e) {
+  const Rests r = find_rests(x, o, record_noise_sd);
+  e.rest_noise_sd = r.bounds.noise_sd;
+  e.rest_level = r.judged ? r.bounds.level : r.raw_level;
+  e.rests_above_noise = r.judged;
+  e.rest_intervals = r.runs.size();
+  std::size_t at_rest = 0;
+  for (const auto& run : r.runs) at_rest += run.second;
   e.rest_share = static_cast<double>(at_rest) / static_cast<double>(x.size());
 }
 

@@ -215,6 +215,7 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
   s.stretch_max_mismatch = best.max_mismatch;
   s.growth_per_s = best.growth_per_step * rate_Hz;
   s.repeats = s.share >= o.min_share;
+  s.max_mismatch = o.max_mismatch;
   return s;
 }
 

@@ -1,5 +1,6 @@
 #include "analysis/series_statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -16,10 +17,11 @@ double standard_deviation(std::span<const double> x) {
   return x.empty() ? 0.0 : std::sqrt(v / static_cast<double>(x.size()));
 }
 
-std::vector<std::size_t> maxima_indices(std::span<const double> x) {
+std::vector<std::size_t> maxima_indices(std::span<const double> x, double noise_sd) {
   // Peaks separated by a fall of at least a quarter standard deviation (hysteresis), so that
-  // measurement noise riding on an oscillation does not count as extra maxima.
-  const double h = 0.25 * standard_deviation(x);
+  // measurement noise riding on an oscillation does not count as extra maxima; with a known
+  // white noise, by at least its range over about a hundred samples (6 sd).
+  const double h = std::max(0.25 * standard_deviation(x), 6.0 * noise_sd);
   std::vector<std::size_t> peaks;
   bool rising = true;
   double extreme = x.empty() ? 0.0 : x[0];
@@ -45,8 +47,8 @@ std::vector<std::size_t> maxima_indices(std::span<const double> x) {
   return peaks;
 }
 
-double mean_maxima_spacing(std::span<const double> x) {
-  const auto peaks = maxima_indices(x);
+double mean_maxima_spacing(std::span<const double> x, double noise_sd) {
+  const auto peaks = maxima_indices(x, noise_sd);
   return peaks.size() >= 2 ? static_cast<double>(peaks.back() - peaks.front()) /
                                  static_cast<double>(peaks.size() - 1)
                            : static_cast<double>(x.size());

@@ -11,14 +11,14 @@ double mean_of(std::span<const double> x);
 double standard_deviation(std::span<const double> x);
 
 /// Indices of the maxima of x, each followed by a fall of at least a quarter standard
-/// deviation before the next counts (hysteresis against noise riding on an oscillation).
-std::vector<std::size_t> maxima_indices(std::span<const double> x);
+/// deviation, or 6 x noise_sd where a white noise of that sd is known, before the next counts
+/// (hysteresis against noise riding on an oscillation).
+std::vector<std::size_t> maxima_indices(std::span<const double> x, double noise_sd = 0.0);
 
-/// Mean number of samples between successive maxima (each followed by a fall of at least
-/// a quarter standard deviation): the orbital period of an oscillating flow (Lorenz: one
+/// Mean number of samples between successive maxima (as maxima_indices counts them): the orbital period of an oscillating flow (Lorenz: one
 /// turn around a lobe), ~2-3 for maps and noise. Robust where the spectral peak is not
 /// (Lorenz x peaks at its slow lobe switching).
-double mean_maxima_spacing(std::span<const double> x);
+double mean_maxima_spacing(std::span<const double> x, double noise_sd = 0.0);
 
 /// x smoothed by a centred moving average of `width` samples (shorter at the ends).
 std::vector<double> moving_average(std::span<const double> x, std::size_t width);

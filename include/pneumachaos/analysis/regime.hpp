@@ -101,9 +101,14 @@ struct RegimeEvidence {
   /// The record's white noise the rests were judged with: 0 where none is resolved or it is
   /// too small to break the clean rule (rest_statistics).
   double rest_noise_sd = 0.0;
-  double rest_level = 0.0;  ///< the band |x| <= rest_level a rest stays in
-  /// The band is narrow enough to tell rests from the noise (VerdictOptions::max_rest_band).
+  /// The band |x| <= rest_level a rest stays in (under noise: on the running mean over
+  /// min_rest_samples_in_noise samples); where rests are not judged, the raw samples' band.
+  double rest_level = 0.0;
+  /// The raw samples' band is narrow enough to tell rests from the noise
+  /// (VerdictOptions::max_rest_band).
   bool rests_above_noise = true;
+  /// The record's white noise floor (estimate_noise_floor), 0 where none is resolved.
+  double noise_sd = 0.0;
   std::size_t rest_intervals = 0;
   double rest_share = 0.0;  ///< fraction of samples at rest
   bool lyapunov_found = false;

@@ -43,6 +43,7 @@ struct SelfRepetition {
   /// rate of ln(window mismatch) along it (0 with fewer than 3 windows).
   double stretch_s = 0.0, share = 0.0, stretch_max_mismatch = 0.0, growth_per_s = 0.0;
   bool repeats = false;  ///< share >= min_share
+  double max_mismatch = 0.0;  ///< the "small" it was judged by (the option's, or raised by noise)
 };
 
 /// period_samples: the orbital period (sets the shortest lag and the window length).
