@@ -35,6 +35,7 @@ struct AnalyzeArgs {
   std::string column = "v";
   std::string quantity;  ///< velocity, other, or empty: from the column (record_is_velocity)
   std::optional<double> rate_Hz, from_s, to_s;
+  std::vector<std::string> units;
   std::string json;
   std::string series_out;
   bool no_wolf = false;
@@ -105,6 +106,7 @@ Action add_analyze(CLI::App& app) {
   cmd->add_option("--rate", args->rate_Hz,
                   "sample rate [Hz] of a file without a time column (with one, the two must "
                   "agree)");
+  add_units_option(cmd, args->units);
   cmd->add_option("--from", args->from_s,
                   "analyse from this time [s] on the record's clock (e.g. 2 to skip a start-up "
                   "transient, as `reproduce` does; default: the first sample)");
@@ -141,6 +143,7 @@ Action add_analyze(CLI::App& app) {
     CsvSeriesOptions input;
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
+    input.units = parse_unit_overrides(args->units, "--units");
     const TimeSeries series = with_flag_names(
         FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
         [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
