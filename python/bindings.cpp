@@ -52,6 +52,9 @@ std::vector<double> series_from(const py::array& in, const std::string& name = "
     throw Error(name, "expected a 1-D array of samples, got " + std::to_string(in.ndim()) +
                           " dimensions");
   }
+  if (in.dtype().kind() == 'c')
+    throw Error(name, "expected real numbers, got a complex array (take .real or abs() first)");
+  if (in.size() == 0) throw Error(name, "the array is empty: expected the record's samples");
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(in);
   if (!a) throw Error(name, "expected an array of numbers");
   std::vector<double> x(a.data(), a.data() + a.size());
@@ -272,7 +275,10 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("delay", &AnalysisOptions::delay)
       .def_readwrite("theiler", &AnalysisOptions::theiler)
       .def_readwrite("seed", &AnalysisOptions::seed)
-      .def_readwrite("verdict_seeds", &AnalysisOptions::verdict_seeds);
+      .def_readwrite("verdict_seeds", &AnalysisOptions::verdict_seeds)
+      .def_property(
+          "surrogates", [](const AnalysisOptions& o) { return o.surrogates.count; },
+          [](AnalysisOptions& o, std::size_t n) { o.surrogates.count = n; });
   m.def("simulate", &simulate_py);
   m.def("analyze", &analyze_py);
   m.def("stability_json", [](const Scenario& s) {
