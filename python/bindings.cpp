@@ -106,14 +106,15 @@ void check_rate(double rate_Hz) {
 }
 
 py::dict simulate_py(const Scenario& scenario) {
+  const Plant plant(scenario);
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    r = simulate(Plant(scenario), scenario.run);
+    r = simulate(plant, scenario.run);
   }
   py::dict out;
   out["ok"] = r.summary.ok();
-  out["summary"] = describe(r.summary);
+  out["summary"] = describe(r.summary, !plant.seal_friction().has_stiction());
   out["termination"] = std::string(termination_name(r.summary.termination));
   if (!r.summary.ok()) return out;
   std::vector<double> t(r.series.size());
