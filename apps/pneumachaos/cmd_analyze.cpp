@@ -39,6 +39,7 @@ struct AnalyzeArgs {
   std::string json;
   std::string series_out;
   bool no_wolf = false;
+  bool explain = false;
   bool no_embedding_spread = false;
   std::optional<std::string> surrogates, seed, verdict_seeds, dimension, delay, theiler;
 };
@@ -118,6 +119,8 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_flag("--explain", args->explain,
+                "print the rule that combines the evidence into the verdict (a paragraph)");
   cmd->add_flag("--no-embedding-spread", args->no_embedding_spread,
                 "leave out of the divergence exponent's uncertainty its values at embedding "
                 "dimensions m - 1 and m + 1 (two fewer divergence curves, about 15 % less work on "
@@ -151,7 +154,7 @@ Action add_analyze(CLI::App& app) {
     AnalysisOptions chosen = options;
     chosen.velocity = record_is_velocity(args->quantity, channel);
     const AnalysisResult r = analyzed(channel, series.rate_Hz(), chosen, args->file);
-    fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
+    fmt::print("{}", analysis_summary(r, channel.name, channel.unit, args->explain));
     // The JSON and the curves appear together or not at all.
     OutputSet outputs;
     if (!args->json.empty()) {
