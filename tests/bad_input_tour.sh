@@ -38,6 +38,7 @@ sed '1s/^t\[s\]/t[min]/' "$W/rec.csv" >"$W/rec_min.csv"
 for r in ss_kpa ss_gauge ss_missing; do
   printf '[[free]]\nkey = "friction.Fc_N"\nlower = 15\nupper = 35\nsource = "a catalogue"\n\n[objective]\nkind = "records"\nrecords = [ { file = "%s.csv" } ]\n' "$r" >"$W/cal_$r.toml"
 done
+printf '\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10' >"$W/bin.csv"  # an image under a record's name
 mkdir "$W/adir"
 # A named pipe stands for a device: a regression that renamed a finished file over `-o
 # /dev/null` (as root) would replace the machine's /dev/null; over this pipe it harms nothing.

@@ -156,6 +156,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
                                      const RecordColumns& names,
                                      const RecordReadOptions& options) {
   options.validate();
+  refuse_binary(text, origin);
   CsvLines lines(text);
   std::string line;
   if (!lines.next(line)) throw Error(origin, "the file is empty: expected a header line");

@@ -132,8 +132,13 @@ Layout read_layout(CsvLines& lines, std::string& first, const std::string& origi
   if (l.value < 0) {
     std::string known;
     for (const auto& h : l.names) known += (known.empty() ? "" : ", ") + h;
-    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}{}", options.column,
-                                   known, separator_hint(l.names)));
+    const bool number = std::all_of(options.column.begin(), options.column.end(),
+                                    [](unsigned char c) { return std::isdigit(c) != 0; });
+    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}{}{}", options.column,
+                                   known, separator_hint(l.names),
+                                   number ? "; a number selects a column only in a file without a "
+                                            "header: give the column's name"
+                                          : ""));
   }
   if (l.has_header) read_units(l, options, where);
   else if (!options.units.empty())
@@ -295,6 +300,7 @@ std::vector<std::string> split_csv_fields(const std::string& line) {
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
   options.validate();
+  refuse_binary(text, origin);
   // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
   CsvLines lines(text);
   std::string line;
