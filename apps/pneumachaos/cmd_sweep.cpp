@@ -41,7 +41,8 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   }
   const SweepRun run = simulate_run(spec, point, repeat);
   const RunRecord r = judge_run(spec, run);
-  fmt::print(stderr, "{}\n{}\n", RunRecord::csv_header(), r.encode());
+  fmt::print(stderr, "sweep: run {}:{} replayed; as runs.csv records it:\n", point, repeat);
+  for (const auto& [name, value] : r.named_fields()) fmt::print(stderr, "  {:<22} {}\n", name, value);
   if (!run.sim.summary.ok()) return kExitRunFailed;
   return write_series_csv(run.sim.series, path);
 }
