@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "flag_names.hpp"
+#include "stage_progress.hpp"
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
@@ -40,6 +41,7 @@ struct AnalyzeArgs {
   std::string series_out;
   bool no_wolf = false;
   bool explain = false;
+  bool quiet = false;
   bool no_embedding_spread = false;
   std::optional<std::string> surrogates, seed, verdict_seeds, dimension, delay, theiler;
 };
@@ -119,6 +121,8 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_flag("--quiet", args->quiet,
+                "no progress line (shown on a terminal when the analysis runs longer than 2 s)");
   cmd->add_flag("--explain", args->explain,
                 "print the rule that combines the evidence into the verdict (a paragraph)");
   cmd->add_flag("--no-embedding-spread", args->no_embedding_spread,
@@ -153,7 +157,12 @@ Action add_analyze(CLI::App& app) {
     const Channel& channel = series.channels().front();
     AnalysisOptions chosen = options;
     chosen.velocity = record_is_velocity(args->quantity, channel);
-    const AnalysisResult r = analyzed(channel, series.rate_Hz(), chosen, args->file);
+    AnalysisResult r;
+    {
+      StageProgress progress("analyze", !args->quiet);
+      chosen.on_stage = [&progress](const char* stage) { progress.stage(stage); };
+      r = analyzed(channel, series.rate_Hz(), chosen, args->file);
+    }
     fmt::print("{}", analysis_summary(r, channel.name, channel.unit, args->explain));
     // The JSON and the curves appear together or not at all.
     OutputSet outputs;
