@@ -118,6 +118,7 @@ std::vector<identify::MeasuredRecord> read_records(const CalibrationSpec& spec) 
                                                                 "to the spec's folder)"));
     identify::RecordReadOptions read = identify::read_options_for(spec.base);
     if (r.Ps_MPa) read.plausible.supply_Pa = spec.base.ambient_pressure_Pa + *r.Ps_MPa * 1e6;
+    read.units = r.units;
     out.push_back(identify::read_measured_record(r.file, identify::RecordColumns{}, read));
   }
   return out;

@@ -136,11 +136,13 @@ std::vector<std::string> header_units(const std::vector<std::string>& header,
       return header_name(h) == name;
     });
     if (it == header.end())
-      throw Error(where, fmt::format("--units names a column \"{}\" that the header lacks", name));
+      throw Error(where, fmt::format("a unit is given for a column \"{}\" that the header lacks",
+                                     name));
     auto& u = units[static_cast<std::size_t>(it - header.begin())];
     if (!u.empty())
-      throw Error(where, fmt::format("column {} states its unit in brackets; --units {}={} "
-                                     "would contradict or repeat it: drop that entry",
+      throw Error(where, fmt::format("column {} states its unit in brackets; the unit {}={} "
+                                     "given beside it would contradict or repeat it: drop that "
+                                     "entry",
                                      *it, name, unit));
     u = unit;
   }
@@ -155,11 +157,11 @@ std::string implausible_value(double v, const ColumnUnit& unit, const std::strin
                        std::abs(v), range.max_speed_m_per_s, header_name(column));
   if (unit.quantity != Quantity::kPressure) return "";
   if (v < range.min_pressure_Pa)
-    return fmt::format("absolute pressure {:.4g} Pa is below {:g} kPa, where no chamber of a "
+    return fmt::format("absolute pressure {1:.4g} Pa is below {2:g} kPa, where no chamber of a "
                        "running cylinder falls: the pressures look like gauge values or kPa; "
-                       "head the column with its unit, e.g. {}[kPa], {}[Pa g] or {}[MPa gauge]",
-                       v, range.min_pressure_Pa * 1e-3, header_name(column), header_name(column),
-                       header_name(column));
+                       "head the column with its unit, e.g. {0}[kPa], {0}[Pa g] or {0}[MPa gauge] "
+                       "(or give --units \"{0}=Pa g\" for a header without brackets)",
+                       header_name(column), v, range.min_pressure_Pa * 1e-3);
   if (range.supply_Pa && v > PlausibleRange::kOverSupply * *range.supply_Pa)
     return fmt::format("absolute pressure {:.4g} Pa is more than {:g} x the supply ({:.4g} Pa "
                        "absolute): the unit looks wrong (Pa read as kPa?), or the scenario's "

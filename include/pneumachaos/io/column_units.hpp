@@ -49,8 +49,9 @@ using UnitOverrides = std::map<std::string, std::string>;
 UnitOverrides parse_unit_overrides(const std::vector<std::string>& entries,
                                    const std::string& option);
 
-/// The unit text of each header: its brackets, or its `--units` entry. Throws Error(where) for
-/// an entry that names no column of the header or one whose brackets already state a unit.
+/// The unit text of each header: its brackets, or its entry in `overrides` (`--units`, a
+/// calibration record's `units`). Throws Error(where) for an entry that names no column of the
+/// header or one whose brackets already state a unit.
 std::vector<std::string> header_units(const std::vector<std::string>& header,
                                       const UnitOverrides& overrides, const std::string& where);
 
