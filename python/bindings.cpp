@@ -75,13 +75,17 @@ identify::MeasuredRecord record_from(const py::array& t, const py::array& v, con
 }
 
 // `pneumachaos friction` on arrays: the same estimate, fits and JSON.
+// window: the Savitzky-Golay window in samples, 0 = chosen from the noise (the CLI's default).
 std::string friction_py(const py::array& t, const py::array& v, const py::array& p1,
                         const py::array& p2, const Scenario& scenario,
-                        const std::vector<std::string>& models, bool pressure_dependent) {
+                        const std::vector<std::string>& models, bool pressure_dependent,
+                        long long window, int max_iterations) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
-  const identify::FrictionFitOptions fit =
+  identify::FrictionFitOptions fit =
       identify::fit_options_for(scenario, models, pressure_dependent, "models");
-  const identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  fit.max_iterations = max_iterations;
+  identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  if (window != 0) identify::set_smoothing_window(settings, window, "window");
   py::gil_scoped_release release;
   const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
   const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
@@ -91,11 +95,11 @@ std::string friction_py(const py::array& t, const py::array& v, const py::array&
 
 // `pneumachaos fit` on arrays: the free keys identified, as its JSON.
 std::string fit_py(const py::array& t, const py::array& v, const py::array& p1,
-                   const py::array& p2, const Scenario& start, std::vector<std::string> free) {
+                   const py::array& p2, const Scenario& start, std::vector<std::string> free,
+                   const identify::FitOptions& options) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   if (free.empty()) free = identify::default_free_keys(start);
   identify::check_free_keys(start, free);
-  const identify::FitOptions options;
   py::gil_scoped_release release;
   const identify::FitResult result = identify::fit_model(record, start, free, options);
   return identify::fit_json(result, options, record);
@@ -267,6 +271,16 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   bind_scenario(m);
+  // fit's options in the command line's units (mm/s for the velocity scale) and defaults.
+  py::class_<identify::FitOptions>(m, "FitOptions")
+      .def(py::init<>())
+      .def_readwrite("segment_s", &identify::FitOptions::segment_length_s)
+      .def_readwrite("pressure_scale_Pa", &identify::FitOptions::pressure_scale_Pa)
+      .def_property(
+          "velocity_scale_mm_per_s",
+          [](const identify::FitOptions& o) { return o.velocity_scale_m_per_s * 1e3; },
+          [](identify::FitOptions& o, double mm) { o.velocity_scale_m_per_s = mm * 1e-3; })
+      .def_readwrite("max_iterations", &identify::FitOptions::max_iterations);
   py::class_<AnalysisOptions>(m, "AnalysisOptions")
       .def(py::init<>())
       .def_readwrite("wolf", &AnalysisOptions::wolf)

@@ -70,11 +70,7 @@ Action add_friction(CLI::App& app) {
         scenario, args->models, args->pressure_dependent, "--model");
     fit.max_iterations = args->max_iterations;
     identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
-    if (args->window) {
-      if (*args->window < 3 || *args->window % 2 == 0)
-        throw Error("--window", fmt::format("expected an odd number of samples >= 3, got {}", *args->window));
-      settings.sg_half_width = static_cast<std::size_t>(*args->window / 2);
-    }
+    if (args->window) identify::set_smoothing_window(settings, *args->window, "--window");
     const identify::MeasuredRecord record = identify::read_measured_record(
         args->file, args->columns, record_read_options(scenario, args->scenario, args->units));
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);

@@ -208,9 +208,7 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
     for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler),
                         ("seed", seed), ("verdict_seeds", verdict_seeds),
                         ("surrogates", surrogates)):
-        if isinstance(value, bool) or not isinstance(value, (int, _np.integer)) or value < 0:
-            raise ValueError(f"{name}: expected a whole number >= 0, got {value!r}")
-        setattr(options, name, int(value))
+        setattr(options, name, _whole(name, value, 0))
     return AnalysisResult(*_core.analyze(_samples(x), float(rate_Hz), options))
 
 
@@ -236,22 +234,49 @@ def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s
                                                 float(measure_s), float(renormalize_s)))
 
 
-def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False):
+def _whole(name, value, least):
+    """A whole number >= least, else ValueError naming the argument."""
+    if isinstance(value, bool) or not isinstance(value, (int, _np.integer)) or value < least:
+        raise ValueError(f"{name}: expected a whole number >= {least}, got {value!r}")
+    return int(value)
+
+
+def _positive(name, value):
+    """A number > 0, else ValueError naming the argument."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, _np.integer, _np.floating)) \
+            or not value > 0:
+        raise ValueError(f"{name}: expected a number > 0, got {value!r}")
+    return float(value)
+
+
+def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False, window=None,
+             max_iterations=200):
     """Seal friction from a measured record, as `pneumachaos friction --json` gives it: t [s],
-    v [m/s], P1 and P2 [Pa, absolute] as 1-D arrays (or lists) of one length; geometry and moving mass
-    from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre" (default
-    all). Raises ValueError for bad input, RuntimeError when a fit does not converge."""
+    v [m/s], P1 and P2 [Pa, absolute] as 1-D arrays (or lists) of one length; geometry and
+    moving mass from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre"
+    (default all). window: the Savitzky-Golay window in samples (odd, >= 3; default: chosen from
+    the noise); max_iterations: allowed to each fit (default 200), as --window and
+    --max-iterations. Raises ValueError for bad input, RuntimeError when no fit converges."""
+    window = 0 if window is None else _whole("window", window, 1)
     return _json.loads(_core.friction_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
                                            _scenario(scenario)._core, _names(models, "models"),
-                                           bool(pressure_dependent)))
+                                           bool(pressure_dependent), window,
+                                           _whole("max_iterations", max_iterations, 1)))
 
 
-def fit(t, v, P1, P2, scenario=None, free=()):
+def fit(t, v, P1, P2, scenario=None, free=(), segment_s=0.2, pressure_scale_Pa=1000.0,
+        velocity_scale_mm_per_s=30.0, max_iterations=50):
     """Identifies the scenario keys named in `free` (default: S1, S2, the seal's Fc and Fs)
-    from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it.
-    Raises ValueError for bad input, RuntimeError when the fit does not converge."""
+    from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it,
+    with its --segment, --pressure-scale, --velocity-scale and --max-iterations (same
+    defaults). Raises ValueError for bad input, RuntimeError when the fit does not converge."""
+    options = _core.FitOptions()
+    options.segment_s = _positive("segment_s", segment_s)
+    options.pressure_scale_Pa = _positive("pressure_scale_Pa", pressure_scale_Pa)
+    options.velocity_scale_mm_per_s = _positive("velocity_scale_mm_per_s", velocity_scale_mm_per_s)
+    options.max_iterations = _whole("max_iterations", max_iterations, 1)
     return _json.loads(_core.fit_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
-                                      _scenario(scenario)._core, _names(free, "free")))
+                                      _scenario(scenario)._core, _names(free, "free"), options))
 
 
 def _print_progress():
@@ -304,8 +329,7 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     _refuse_under_mpi()
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
                         ("surrogates", surrogates), ("adaptive_step", adaptive_step)):
-        if isinstance(value, bool) or not isinstance(value, (int, _np.integer)) or value < 0:
-            raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
+        _whole(f"sweep: {name}", value, 0)
     if progress is True:
         progress = _print_progress()
     elif progress is False:
@@ -330,8 +354,7 @@ def calibrate(spec, out_dir, threads=0, resume=False):
     """Runs the calibration SPEC (a TOML file, docs/guide/calibrate.md) into out_dir, as
     `pneumachaos calibrate SPEC --out DIR`; resume=True continues one journalled there. Returns
     calibration.json as a dict: the best point, its fitted and its predicted claims."""
-    if isinstance(threads, bool) or not isinstance(threads, (int, _np.integer)) or threads < 0:
-        raise ValueError(f"calibrate: threads: expected a whole number >= 0, got {threads!r}")
+    _whole("calibrate: threads", threads, 0)
     if not out_dir:
         raise ValueError("calibrate: out_dir: a directory for the results is required")
     return _json.loads(_core.calibrate_json(str(spec), str(out_dir), int(threads), bool(resume)))

@@ -124,3 +124,21 @@ def test_pressures_in_kpa_are_refused_as_on_the_command_line():
     run = pc.simulate(rig, duration_s=1.0)
     with pytest.raises(ValueError, match=r"column P1, sample 1: .*look like gauge values or kPa"):
         pc.friction(run.t, run.v, run.P1 / 1000, run.P2 / 1000, rig)
+
+
+def test_friction_and_fit_take_the_command_lines_options():
+    """--window and --max-iterations of friction, --segment, --pressure-scale,
+    --velocity-scale and --max-iterations of fit: reachable, checked by name."""
+    rig = pc.Scenario.from_toml(SIMPLE_RIG).set("circuit.S2_mm2", 0.2)
+    run = pc.simulate(rig, duration_s=3.0)
+    args = (run.t, run.v, run.P1, run.P2, rig)
+    f = pc.friction(*args, models=["classic"], window=7)
+    assert f["fits"]["classic"]["Fc_N"]["value"] > 0
+    with pytest.raises(ValueError, match=r"^window: expected an odd number of samples >= 3, got 4"):
+        pc.friction(*args, window=4)
+    with pytest.raises(RuntimeError, match="did not converge"):
+        pc.friction(*args, models=["lugre"], max_iterations=1)
+    with pytest.raises(ValueError, match=r"^segment_s: expected a number > 0"):
+        pc.fit(*args, free=["circuit.S2_mm2"], segment_s=0)
+    r = pc.fit(*args, free=["circuit.S2_mm2"], segment_s=0.5, velocity_scale_mm_per_s=20.0)
+    assert r["parameters"]["circuit.S2_mm2"]["value"] == pytest.approx(0.2, rel=0.05)
