@@ -94,8 +94,8 @@ std::string friction_py(const py::array& t, const py::array& v, const py::array&
 }
 
 // `pneumachaos fit` on arrays: the free keys identified, as its JSON.
-std::string fit_py(const py::array& t, const py::array& v, const py::array& p1,
-                   const py::array& p2, const Scenario& start, std::vector<std::string> free,
+std::string fit_py(const py::array& t, const py::array& v, const py::array& p1, const py::array& p2,
+                   const Scenario& start, std::vector<std::string> free,
                    const identify::FitOptions& options) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   if (free.empty()) free = identify::default_free_keys(start);

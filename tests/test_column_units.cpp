@@ -13,9 +13,10 @@
 
 using namespace pneumachaos;
 
-
 TEST(ColumnUnits, EveryUnitOfTheIssueIsReadToSI) {
-  const auto scale = [](const char* text, Quantity q) { return parse_unit(text, q, "c", "f").scale; };
+  const auto scale = [](const char* text, Quantity q) {
+    return parse_unit(text, q, "c", "f").scale;
+  };
   EXPECT_DOUBLE_EQ(scale("s", Quantity::kTime), 1.0);
   EXPECT_DOUBLE_EQ(scale("ms", Quantity::kTime), 1e-3);
   EXPECT_DOUBLE_EQ(scale("us", Quantity::kTime), 1e-6);
@@ -39,7 +40,8 @@ TEST(ColumnUnits, EveryUnitOfTheIssueIsReadToSI) {
 }
 
 TEST(ColumnUnits, UnknownUnitIsRefusedNamingTheColumn) {
-  const std::string m = error_of([] { parse_unit("min", Quantity::kTime, "t[min]", "rec.csv:1:1"); });
+  const std::string m =
+      error_of([] { parse_unit("min", Quantity::kTime, "t[min]", "rec.csv:1:1"); });
   EXPECT_NE(m.find("rec.csv:1:1"), std::string::npos) << m;
   EXPECT_NE(m.find("column t[min]"), std::string::npos) << m;
   EXPECT_NE(m.find("s, ms, us"), std::string::npos) << m;
@@ -50,10 +52,12 @@ TEST(ColumnUnits, OverridesFillHeadersWithoutBrackets) {
   const UnitOverrides o = parse_unit_overrides({"t=ms", "P1=kPa g"}, "--units");
   const auto units = header_units({"t", "v[mm/s]", "P1"}, o, "rec.csv:1");
   EXPECT_EQ(units, (std::vector<std::string>{"ms", "mm/s", "kPa g"}));
-  EXPECT_NE(error_of([&] { header_units({"t[s]"}, o, "rec.csv:1"); }).find("lacks"), std::string::npos);
+  EXPECT_NE(error_of([&] { header_units({"t[s]"}, o, "rec.csv:1"); }).find("lacks"),
+            std::string::npos);
   const std::string twice = error_of([] { header_units({"t[s]"}, {{"t", "ms"}}, "rec.csv:1"); });
   EXPECT_NE(twice.find("states its unit in brackets"), std::string::npos) << twice;
-  EXPECT_NE(error_of([] { parse_unit_overrides({"t"}, "--units"); }).find("--units"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_unit_overrides({"t"}, "--units"); }).find("--units"),
+            std::string::npos);
   EXPECT_NE(error_of([] { parse_unit_overrides({"t=s", "t=ms"}, "--units"); }), "(no error)");
 }
 
@@ -71,7 +75,8 @@ TEST(ColumnUnits, ImplausibleValuesNameTheLikelyMistake) {
   EXPECT_NE(implausible_value(1.3e6, pa, "P1[Pa]", range).find("supply"), std::string::npos);
   const ColumnUnit ms = parse_unit("m/s", Quantity::kVelocity, "v[m/s]", "f");
   EXPECT_EQ(implausible_value(-9.0, ms, "v[m/s]", range), "");
-  EXPECT_NE(implausible_value(-35.0, ms, "v[m/s]", range).find("look like mm/s"), std::string::npos);
+  EXPECT_NE(implausible_value(-35.0, ms, "v[m/s]", range).find("look like mm/s"),
+            std::string::npos);
 }
 
 TEST(ColumnUnits, ScaleNamesItsUnit) {

@@ -187,7 +187,8 @@ TEST(CsvReader, ARateOffByAThousandNamesTheClocksUnit) {
   o.rate_Hz = 1000.0;
   const std::string m = error_of("t[s],v\n0,1\n1,2\n2,3\n", o);  // milliseconds under [s]
   EXPECT_NE(m.find("the clock looks like it counts ms, not s: head the column t[ms]"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
 }
 
 TEST(CsvReader, AnalysedValuesOfAKnownUnitMustBePhysical) {
@@ -200,7 +201,8 @@ TEST(CsvReader, AnalysedValuesOfAKnownUnitMustBePhysical) {
   const std::string mm = error_of("t[s],v[m/s]\n0,20\n0.001,35\n0.002,2\n");
   EXPECT_NE(mm.find("look like mm/s"), std::string::npos) << mm;
   o.column = "u";  // a unit this reader does not know only labels the series
-  EXPECT_EQ(parse_csv_series("t[s],u[V]\n0,1e6\n0.001,2\n", "rec.csv", o).channels().front().unit, "V");
+  EXPECT_EQ(parse_csv_series("t[s],u[V]\n0,1e6\n0.001,2\n", "rec.csv", o).channels().front().unit,
+            "V");
 }
 
 TEST(CsvReader, AHeaderlessClockColumnIsNotAnalysedByDefault) {

@@ -5,18 +5,18 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
-#include <regex>
 #include <cstdint>
 #include <optional>
+#include <regex>
 
 #include "commands.hpp"
 #include "flag_names.hpp"
-#include "stage_progress.hpp"
 #include "pneumachaos/analysis/analysis_output.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
+#include "stage_progress.hpp"
 
 namespace pneumachaos::cli {
 namespace {

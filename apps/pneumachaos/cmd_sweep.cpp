@@ -1,7 +1,6 @@
 // `pneumachaos sweep`: repeated runs over a grid, each judged by the analysis; resumable.
 
 #include <fmt/format.h>
-
 #include <unistd.h>
 
 #include <charconv>
@@ -42,7 +41,8 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   const SweepRun run = simulate_run(spec, point, repeat);
   const RunRecord r = judge_run(spec, run);
   fmt::print(stderr, "sweep: run {}:{} replayed; as runs.csv records it:\n", point, repeat);
-  for (const auto& [name, value] : r.named_fields()) fmt::print(stderr, "  {:<22} {}\n", name, value);
+  for (const auto& [name, value] : r.named_fields())
+    fmt::print(stderr, "  {:<22} {}\n", name, value);
   if (!run.sim.summary.ok()) return kExitRunFailed;
   return write_series_csv(run.sim.series, path);
 }
@@ -175,9 +175,10 @@ Action add_sweep(CLI::App& app) {
     options.threads = args->threads;
     std::optional<InterruptHint> hint;
     if (!args->out.empty())
-      hint.emplace(fmt::format("\nsweep: interrupted; the finished runs are kept in {}: run the same "
-                               "command with --resume to finish the sweep\n",
-                               args->out));
+      hint.emplace(
+          fmt::format("\nsweep: interrupted; the finished runs are kept in {}: run the same "
+                      "command with --resume to finish the sweep\n",
+                      args->out));
     const SweepSummary s = run_sweep(spec, options);
     if (!s.wrote_files) return kExitOk;  // another MPI rank reports
     print_sweep_summary(spec, s, args->out);

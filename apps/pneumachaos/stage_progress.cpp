@@ -38,8 +38,8 @@ void StageProgress::tick() {
   std::unique_lock lock(m_);
   cv_.wait_for(lock, kQuietFor, [this] { return stop_; });
   while (!stop_) {
-    const auto s = std::chrono::duration_cast<std::chrono::seconds>(
-        std::chrono::steady_clock::now() - start_);
+    const auto s =
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start_);
     fmt::print(stderr, "\r{}: {} ({} s)\033[K", command_, stage_, s.count());
     std::fflush(stderr);
     shown_ = true;

@@ -1,7 +1,8 @@
 #include "pneumachaos/identify/measured_record.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/column_units.hpp"

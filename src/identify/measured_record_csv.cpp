@@ -69,8 +69,8 @@ void locate_columns(ColumnSet& c, const RecordColumns& names, const std::string&
   const std::vector<std::string> units = header_units(h, options.units, where);
   for (ColumnSpec* col : c.used()) {
     const auto i = static_cast<std::size_t>(col->index);
-    col->unit = parse_unit(units[i], col->quantity,
-                           h[i], fmt::format("{}:{}:{}", origin, header_line, i + 1));
+    col->unit = parse_unit(units[i], col->quantity, h[i],
+                           fmt::format("{}:{}:{}", origin, header_line, i + 1));
   }
 }
 

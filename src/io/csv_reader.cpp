@@ -13,10 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/column_units.hpp"
 #include "io/csv_fields.hpp"
 #include "io/csv_text.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/column_units.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -140,10 +140,12 @@ Layout read_layout(CsvLines& lines, std::string& first, const std::string& origi
                                             "header: give the column's name"
                                           : ""));
   }
-  if (l.has_header) read_units(l, options, where);
+  if (l.has_header)
+    read_units(l, options, where);
   else if (!options.units.empty())
-    throw Error(where, "--units names columns of a header, and the file has none: give the "
-                       "rate (--rate) and read the values in their own unit");
+    throw Error(where,
+                "--units names columns of a header, and the file has none: give the "
+                "rate (--rate) and read the values in their own unit");
   if (!options.rate_Hz && l.time < 0) {
     throw Error(where, l.has_header ? "no time column (t, time, t[s]) in the header: give the "
                                       "sample rate (--rate)"
@@ -171,7 +173,8 @@ double read_cell(std::string_view field, std::size_t line_no, int col, const Lay
 }
 
 // A value of a known unit, in SI (absolute for a gauge pressure), must be physical.
-void check_plausible(double value, std::size_t line_no, const Layout& l, const std::string& origin) {
+void check_plausible(double value, std::size_t line_no, const Layout& l,
+                     const std::string& origin) {
   const ColumnUnit& u = l.value_unit;
   const double si = value * u.scale + (u.gauge ? kStandardAmbientPa : 0.0);
   const std::string& name = l.names[static_cast<std::size_t>(l.value)];
@@ -194,7 +197,8 @@ void read_row(const std::string& line, std::size_t line_no, const Layout& l,
     return read_cell(fields[static_cast<std::size_t>(col)], line_no, col, l, origin);
   };
   c.values.push_back(cell(l.value));
-  if (l.value_unit.quantity != Quantity::kOther) check_plausible(c.values.back(), line_no, l, origin);
+  if (l.value_unit.quantity != Quantity::kOther)
+    check_plausible(c.values.back(), line_no, l, origin);
   if (l.time < 0) return;
   c.times.push_back(cell(l.time) * l.time_unit.scale);
   const std::size_t n = c.times.size();
@@ -235,11 +239,11 @@ std::string clock_hint(const Layout& l, double file_rate_Hz, double given_rate_H
   const std::string counts =
       unit_with_scale(Quantity::kTime, l.time_unit.scale * file_rate_Hz / given_rate_Hz);
   const std::string name = header_name(l.names[static_cast<std::size_t>(l.time)]);
-  if (counts.empty())
-    return "drop the rate option to use the time column, or correct one of them";
-  return fmt::format("the clock looks like it counts {0}, not {1}: head the column {2}[{0}] (or "
-                     "give --units {2}={0} to a header without brackets)",
-                     counts, l.time_unit.text.empty() ? "s" : l.time_unit.text, name);
+  if (counts.empty()) return "drop the rate option to use the time column, or correct one of them";
+  return fmt::format(
+      "the clock looks like it counts {0}, not {1}: head the column {2}[{0}] (or "
+      "give --units {2}={0} to a header without brackets)",
+      counts, l.time_unit.text.empty() ? "s" : l.time_unit.text, name);
 }
 
 // A file without a header whose analysed column is the default first one, and that first

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "io/json_quantity.hpp"
@@ -46,8 +45,8 @@ std::string stability_table(const Scenario& s, const StabilityResult& r) {
   out += fmt::format(
       "equilibrium at x = {:.1f} mm ({}): v0 = {:.3f} mm/s, P10 = {:.4f} MPa, P20 = {:.4f} MPa "
       "(gauge), friction {:.3f} N, slope B = {:.4g} N*s/m\n",
-      e.position_m * 1e3, position_reason(s, e.position_m), e.v0_m_per_s * 1e3, (e.P10_Pa - Pa) * 1e-6, (e.P20_Pa - Pa) * 1e-6,
-      e.friction_N, e.slope_Ns_per_m);
+      e.position_m * 1e3, position_reason(s, e.position_m), e.v0_m_per_s * 1e3,
+      (e.P10_Pa - Pa) * 1e-6, (e.P20_Pa - Pa) * 1e-6, e.friction_N, e.slope_Ns_per_m);
   out +=
       fmt::format("paper ({}): {} = {:.4g} N*s/m, {} = {:.4g} N/m, zeta = {:.4g} -> {}\n",
                   meter_out ? "eqs. 6-9" : "eqs. 10-11", meter_out ? "a1" : "b1",

@@ -56,7 +56,8 @@ struct RecordCondition {
   std::string file;  ///< the CSV's path (relative to the spec's folder)
   std::optional<double> S1_mm2, S2_mm2, Ps_MPa, m_kg;  ///< m_kg: the total moving mass
   std::optional<double> x0_mm;  ///< the piston's position at the first sample, without an x column
-  /// Units of columns whose header has no brackets, e.g. {"t", "ms"} (docs/reference/record-units.md).
+  /// Units of columns whose header has no brackets, e.g. {"t", "ms"}
+  /// (docs/reference/record-units.md).
   UnitOverrides units;
   std::string where;
 };

@@ -13,7 +13,6 @@
 
 namespace pneumachaos::identify {
 
-
 /// Header names of the columns (matched exactly, or as the name before "[unit]"). Empty x or
 /// a: the column is optional and looked for under its default name only.
 struct RecordColumns {
