@@ -20,29 +20,43 @@ struct KnownUnit {
 };
 
 constexpr std::array kUnits{
-    KnownUnit{"s", Quantity::kTime, 1.0},          KnownUnit{"ms", Quantity::kTime, 1e-3},
-    KnownUnit{"us", Quantity::kTime, 1e-6},        KnownUnit{"µs", Quantity::kTime, 1e-6},
-    KnownUnit{"m/s", Quantity::kVelocity, 1.0},    KnownUnit{"mm/s", Quantity::kVelocity, 1e-3},
-    KnownUnit{"Pa", Quantity::kPressure, 1.0},     KnownUnit{"kPa", Quantity::kPressure, 1e3},
-    KnownUnit{"MPa", Quantity::kPressure, 1e6},    KnownUnit{"bar", Quantity::kPressure, 1e5},
+    KnownUnit{"s", Quantity::kTime, 1.0},
+    KnownUnit{"ms", Quantity::kTime, 1e-3},
+    KnownUnit{"us", Quantity::kTime, 1e-6},
+    KnownUnit{"µs", Quantity::kTime, 1e-6},
+    KnownUnit{"m/s", Quantity::kVelocity, 1.0},
+    KnownUnit{"mm/s", Quantity::kVelocity, 1e-3},
+    KnownUnit{"Pa", Quantity::kPressure, 1.0},
+    KnownUnit{"kPa", Quantity::kPressure, 1e3},
+    KnownUnit{"MPa", Quantity::kPressure, 1e6},
+    KnownUnit{"bar", Quantity::kPressure, 1e5},
     KnownUnit{"psi", Quantity::kPressure, 6894.757293168},
-    KnownUnit{"m", Quantity::kPosition, 1.0},      KnownUnit{"mm", Quantity::kPosition, 1e-3},
+    KnownUnit{"m", Quantity::kPosition, 1.0},
+    KnownUnit{"mm", Quantity::kPosition, 1e-3},
     KnownUnit{"m/s^2", Quantity::kAcceleration, 1.0},
     KnownUnit{"m/s2", Quantity::kAcceleration, 1.0},
     KnownUnit{"mm/s^2", Quantity::kAcceleration, 1e-3},
     KnownUnit{"mm/s2", Quantity::kAcceleration, 1e-3},
-    KnownUnit{"N", Quantity::kForce, 1.0},         KnownUnit{"kN", Quantity::kForce, 1e3},
+    KnownUnit{"N", Quantity::kForce, 1.0},
+    KnownUnit{"kN", Quantity::kForce, 1e3},
 };
 
 const char* quantity_name(Quantity q) {
   switch (q) {
-    case Quantity::kTime: return "a time";
-    case Quantity::kVelocity: return "a velocity";
-    case Quantity::kPressure: return "a pressure";
-    case Quantity::kPosition: return "a position";
-    case Quantity::kAcceleration: return "an acceleration";
-    case Quantity::kForce: return "a force";
-    case Quantity::kOther: break;
+    case Quantity::kTime:
+      return "a time";
+    case Quantity::kVelocity:
+      return "a velocity";
+    case Quantity::kPressure:
+      return "a pressure";
+    case Quantity::kPosition:
+      return "a position";
+    case Quantity::kAcceleration:
+      return "an acceleration";
+    case Quantity::kForce:
+      return "a force";
+    case Quantity::kOther:
+      break;
   }
   return "a value";
 }
@@ -77,8 +91,10 @@ const KnownUnit* find_unit(const std::string& name) {
 std::string accepted_units(Quantity q) {
   std::string out;
   for (const KnownUnit& u : kUnits)
-    if (u.quantity == q && std::string(u.name) != "µs") out += (out.empty() ? "" : ", ") + std::string(u.name);
-  if (q == Quantity::kPressure) out += ", each optionally marked gauge (\"kPa g\") or absolute (\"kPa abs\")";
+    if (u.quantity == q && std::string(u.name) != "µs")
+      out += (out.empty() ? "" : ", ") + std::string(u.name);
+  if (q == Quantity::kPressure)
+    out += ", each optionally marked gauge (\"kPa g\") or absolute (\"kPa abs\")";
   return out;
 }
 
@@ -120,7 +136,8 @@ UnitOverrides parse_unit_overrides(const std::vector<std::string>& entries,
     const auto eq = e.find('=');
     const std::string name = trim_field(e.substr(0, eq));
     if (eq == std::string::npos || name.empty())
-      throw Error(option, fmt::format("expected COLUMN=UNIT, e.g. t=ms or \"P1=kPa g\", got \"{}\"", e));
+      throw Error(option,
+                  fmt::format("expected COLUMN=UNIT, e.g. t=ms or \"P1=kPa g\", got \"{}\"", e));
     if (!out.emplace(name, trim_field(e.substr(eq + 1))).second)
       throw Error(option, fmt::format("column {} is given a unit twice", name));
   }
@@ -132,12 +149,11 @@ std::vector<std::string> header_units(const std::vector<std::string>& header,
   std::vector<std::string> units;
   for (const std::string& h : header) units.push_back(header_unit(h));
   for (const auto& [name, unit] : overrides) {
-    const auto it = std::find_if(header.begin(), header.end(), [&](const std::string& h) {
-      return header_name(h) == name;
-    });
+    const auto it = std::find_if(header.begin(), header.end(),
+                                 [&](const std::string& h) { return header_name(h) == name; });
     if (it == header.end())
-      throw Error(where, fmt::format("a unit is given for a column \"{}\" that the header lacks",
-                                     name));
+      throw Error(where,
+                  fmt::format("a unit is given for a column \"{}\" that the header lacks", name));
     auto& u = units[static_cast<std::size_t>(it - header.begin())];
     if (!u.empty())
       throw Error(where, fmt::format("column {} states its unit in brackets; the unit {}={} "
@@ -151,26 +167,35 @@ std::vector<std::string> header_units(const std::vector<std::string>& header,
 
 std::string implausible_value(double v, const ColumnUnit& unit, const std::string& column,
                               const PlausibleRange& range) {
+  // Read as mm/s, a speed up to 1000 times the limit would be one; beyond, the unit is not it.
+  if (unit.quantity == Quantity::kVelocity && std::abs(v) > 1e3 * range.max_speed_m_per_s)
+    return fmt::format("speed {:.4g} m/s is beyond any pneumatic cylinder, even read as mm/s: "
+                       "is the column {} a velocity?",
+                       std::abs(v), column);
   if (unit.quantity == Quantity::kVelocity && std::abs(v) > range.max_speed_m_per_s)
-    return fmt::format("speed {:.4g} m/s is above {:g} m/s, faster than any pneumatic cylinder: "
-                       "the velocities look like mm/s; head the column {}[mm/s]",
-                       std::abs(v), range.max_speed_m_per_s, header_name(column));
+    return fmt::format(
+        "speed {:.4g} m/s is above {:g} m/s, faster than any pneumatic cylinder: "
+        "the velocities look like mm/s; head the column {}[mm/s]",
+        std::abs(v), range.max_speed_m_per_s, header_name(column));
   if (unit.quantity != Quantity::kPressure) return "";
   if (v < range.min_pressure_Pa)
-    return fmt::format("absolute pressure {1:.4g} Pa is below {2:g} kPa, where no chamber of a "
-                       "running cylinder falls: the pressures look like gauge values or kPa; "
-                       "head the column with its unit, e.g. {0}[kPa], {0}[Pa g] or {0}[MPa gauge] "
-                       "(or give --units \"{0}=Pa g\" for a header without brackets)",
-                       header_name(column), v, range.min_pressure_Pa * 1e-3);
+    return fmt::format(
+        "absolute pressure {1:.4g} Pa is below {2:g} kPa, where no chamber of a "
+        "running cylinder falls: the pressures look like gauge values or kPa; "
+        "head the column with its unit, e.g. {0}[kPa], {0}[Pa g] or {0}[MPa gauge] "
+        "(or give --units \"{0}=Pa g\" for a header without brackets)",
+        header_name(column), v, range.min_pressure_Pa * 1e-3);
   if (range.supply_Pa && v > PlausibleRange::kOverSupply * *range.supply_Pa)
-    return fmt::format("absolute pressure {:.4g} Pa is more than {:g} x the supply ({:.4g} Pa "
-                       "absolute): the unit looks wrong (Pa read as kPa?), or the scenario's "
-                       "supply.pressure_MPa is not the rig's",
-                       v, PlausibleRange::kOverSupply, *range.supply_Pa);
+    return fmt::format(
+        "absolute pressure {:.4g} Pa is more than {:g} x the supply ({:.4g} Pa "
+        "absolute): the unit looks wrong (Pa read as kPa?), or the scenario's "
+        "supply.pressure_MPa is not the rig's",
+        v, PlausibleRange::kOverSupply, *range.supply_Pa);
   if (v > range.max_pressure_Pa)
-    return fmt::format("absolute pressure {:.4g} Pa is above {:g} MPa, beyond any pneumatic "
-                       "rig: the unit looks wrong (Pa read as kPa?)",
-                       v, range.max_pressure_Pa * 1e-6);
+    return fmt::format(
+        "absolute pressure {:.4g} Pa is above {:g} MPa, beyond any pneumatic "
+        "rig: the unit looks wrong (Pa read as kPa?)",
+        v, range.max_pressure_Pa * 1e-6);
   return "";
 }
 
