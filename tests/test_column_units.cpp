@@ -13,7 +13,7 @@
 
 using namespace pneumachaos;
 
-TEST(ColumnUnits, EveryUnitOfTheIssueIsReadToSI) {
+TEST(ColumnUnits, EveryAcceptedUnitIsReadToSI) {
   const auto scale = [](const char* text, Quantity q) {
     return parse_unit(text, q, "c", "f").scale;
   };
