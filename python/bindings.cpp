@@ -52,6 +52,9 @@ std::vector<double> series_from(const py::array& in, const std::string& name = "
     throw Error(name, "expected a 1-D array of samples, got " + std::to_string(in.ndim()) +
                           " dimensions");
   }
+  if (in.dtype().kind() == 'c')
+    throw Error(name, "expected real numbers, got a complex array (take .real or abs() first)");
+  if (in.size() == 0) throw Error(name, "the array is empty: expected the record's samples");
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(in);
   if (!a) throw Error(name, "expected an array of numbers");
   std::vector<double> x(a.data(), a.data() + a.size());
@@ -72,13 +75,17 @@ identify::MeasuredRecord record_from(const py::array& t, const py::array& v, con
 }
 
 // `pneumachaos friction` on arrays: the same estimate, fits and JSON.
+// window: the Savitzky-Golay window in samples, 0 = chosen from the noise (the CLI's default).
 std::string friction_py(const py::array& t, const py::array& v, const py::array& p1,
                         const py::array& p2, const Scenario& scenario,
-                        const std::vector<std::string>& models, bool pressure_dependent) {
+                        const std::vector<std::string>& models, bool pressure_dependent,
+                        long long window, int max_iterations) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
-  const identify::FrictionFitOptions fit =
+  identify::FrictionFitOptions fit =
       identify::fit_options_for(scenario, models, pressure_dependent, "models");
-  const identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  fit.max_iterations = max_iterations;
+  identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  if (window != 0) identify::set_smoothing_window(settings, window, "window");
   py::gil_scoped_release release;
   const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
   const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
@@ -87,12 +94,12 @@ std::string friction_py(const py::array& t, const py::array& v, const py::array&
 }
 
 // `pneumachaos fit` on arrays: the free keys identified, as its JSON.
-std::string fit_py(const py::array& t, const py::array& v, const py::array& p1,
-                   const py::array& p2, const Scenario& start, std::vector<std::string> free) {
+std::string fit_py(const py::array& t, const py::array& v, const py::array& p1, const py::array& p2,
+                   const Scenario& start, std::vector<std::string> free,
+                   const identify::FitOptions& options) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   if (free.empty()) free = identify::default_free_keys(start);
   identify::check_free_keys(start, free);
-  const identify::FitOptions options;
   py::gil_scoped_release release;
   const identify::FitResult result = identify::fit_model(record, start, free, options);
   return identify::fit_json(result, options, record);
@@ -103,14 +110,15 @@ void check_rate(double rate_Hz) {
 }
 
 py::dict simulate_py(const Scenario& scenario) {
+  const Plant plant(scenario);
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    r = simulate(Plant(scenario), scenario.run);
+    r = simulate(plant, scenario.run);
   }
   py::dict out;
   out["ok"] = r.summary.ok();
-  out["summary"] = describe(r.summary);
+  out["summary"] = describe(r.summary, !plant.seal_friction().has_stiction());
   out["termination"] = std::string(termination_name(r.summary.termination));
   if (!r.summary.ok()) return out;
   std::vector<double> t(r.series.size());
@@ -263,6 +271,16 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   bind_scenario(m);
+  // fit's options in the command line's units (mm/s for the velocity scale) and defaults.
+  py::class_<identify::FitOptions>(m, "FitOptions")
+      .def(py::init<>())
+      .def_readwrite("segment_s", &identify::FitOptions::segment_length_s)
+      .def_readwrite("pressure_scale_Pa", &identify::FitOptions::pressure_scale_Pa)
+      .def_property(
+          "velocity_scale_mm_per_s",
+          [](const identify::FitOptions& o) { return o.velocity_scale_m_per_s * 1e3; },
+          [](identify::FitOptions& o, double mm) { o.velocity_scale_m_per_s = mm * 1e-3; })
+      .def_readwrite("max_iterations", &identify::FitOptions::max_iterations);
   py::class_<AnalysisOptions>(m, "AnalysisOptions")
       .def(py::init<>())
       .def_readwrite("wolf", &AnalysisOptions::wolf)
@@ -272,7 +290,10 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("delay", &AnalysisOptions::delay)
       .def_readwrite("theiler", &AnalysisOptions::theiler)
       .def_readwrite("seed", &AnalysisOptions::seed)
-      .def_readwrite("verdict_seeds", &AnalysisOptions::verdict_seeds);
+      .def_readwrite("verdict_seeds", &AnalysisOptions::verdict_seeds)
+      .def_property(
+          "surrogates", [](const AnalysisOptions& o) { return o.surrogates.count; },
+          [](AnalysisOptions& o, std::size_t n) { o.surrogates.count = n; });
   m.def("simulate", &simulate_py);
   m.def("analyze", &analyze_py);
   m.def("stability_json", [](const Scenario& s) {

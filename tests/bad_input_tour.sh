@@ -23,6 +23,25 @@ tail -n +2 "$W/rec.csv" | cut -d, -f1,3 | tr ',' ' ' >"$W/tv.txt"
 tail -n +2 "$W/rec.csv" | cut -d, -f1,3 | tr ',.' ';,' | sed '1i t;v' >"$W/semi.csv"
 head -n 11 "$W/rec.csv" >"$W/short.csv"
 awk -F, 'BEGIN{OFS=","} NR>1{$3=$3*1000} {print}' "$W/ss.csv" >"$W/ss_mm.csv"  # mm/s as m/s
+# Unit mistakes (docs/reference/record-units.md): a clock in ms headed t[ms] (read
+# right) and headed t[s]; pressures in kPa, and gauge pressures, headed [Pa]; calibration specs
+# whose records are those files (one with its units in the spec), or a file that does not exist.
+ms_clock() { awk -F, -v h="$2" 'BEGIN{OFS=","} NR==1{$1=h} NR>1{$1=$1*1000} {print}' "$W/$1"; }
+ms_clock rec.csv 't[ms]' >"$W/rec_ms.csv"
+ms_clock rec.csv 't[s]' >"$W/rec_ms_as_s.csv"
+ms_clock ss.csv 't[ms]' >"$W/ss_ms.csv"
+awk -F, 'BEGIN{OFS=","} NR>1{$4=$4/1000; $5=$5/1000} {print}' "$W/ss.csv" >"$W/ss_kpa.csv"
+awk -F, 'BEGIN{OFS=","} NR>1{$4=$4-101325; $5=$5-101325} {print}' "$W/ss.csv" >"$W/ss_gauge.csv"
+sed '1s/\[[^]]*\]//g' "$W/ss_gauge.csv" >"$W/ss_gauge_bare.csv"  # t,x,v,P1,P2,...
+tail -n +2 "$W/rec_ms.csv" | cut -d, -f1,3 | sed '1i t,v' >"$W/tv_ms.csv"
+sed '1s/^t\[s\]/t[min]/' "$W/rec.csv" >"$W/rec_min.csv"
+for r in ss_kpa ss_gauge ss_missing ss_gauge_bare; do
+  printf '[[free]]\nkey = "friction.Fc_N"\nlower = 15\nupper = 35\nsource = "a catalogue"\n\n[objective]\nkind = "records"\nrecords = [ { file = "%s.csv" } ]\n' "$r" >"$W/cal_$r.toml"
+done
+sed -i 's/"ss_gauge_bare.csv" }/"ss_gauge_bare.csv", units = { P1 = "Pa g", P2 = "Pa gauge" } }/' \
+  "$W/cal_ss_gauge_bare.toml"  # the units given in the spec, and a short run
+printf '\n[optimizer]\npopulation = 5\nmax_evaluations = 10\n' >>"$W/cal_ss_gauge_bare.toml"
+printf '\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10' >"$W/bin.csv"  # an image under a record's name
 mkdir "$W/adir"
 # A named pipe stands for a device: a regression that renamed a finished file over `-o
 # /dev/null` (as root) would replace the machine's /dev/null; over this pipe it harms nothing.

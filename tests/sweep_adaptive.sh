@@ -31,6 +31,6 @@ point=$(awk -F, 'NR > 1 && $NF == 1 { print $1; exit }' "$work/adaptive/points.c
 [ -n "$point" ] || { echo "no inferred point"; exit 1; }
 "$cli" "${args[@]}" "${adaptive[@]}" --replay "$point:1" -o "$work/run.csv" 2>"$work/line"
 expected=$(awk -F, -v p="$point" 'NR > 1 && $3 == p && $4 == 1' "$work/full/runs.csv" | cut -d, -f3-)
-got=$(tail -n 1 "$work/line")
+got=$(grep '^  ' "$work/line" | sed -E 's/^  [^ ]+ *//' | paste -sd, -)  # the named fields
 [ "$expected" = "$got" ] || { printf 'full:   %s\nreplay: %s\n' "$expected" "$got"; exit 1; }
 echo "adaptive: killed and resumed identical; evaluated runs are the full sweep's; inferred point replayed"

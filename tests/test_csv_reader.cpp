@@ -167,6 +167,44 @@ TEST(CsvReader, ARateMustAgreeWithTheTimeColumn) {
   EXPECT_EQ(s.start_s(), 4.0);
 }
 
+TEST(CsvReader, TheClockIsReadInItsUnit) {
+  const std::string ms = "t[ms],v[m/s]\n0,0.1\n1,0.2\n2,0.1\n3,0.3\n";
+  const auto s = parse_csv_series(ms, "rec.csv", {});
+  EXPECT_NEAR(s.rate_Hz(), 1000.0, 1e-9);
+  const auto us = parse_csv_series("t[us],v\n10,1\n20,2\n30,3\n", "rec.csv", {});
+  EXPECT_NEAR(us.rate_Hz(), 1e5, 1e-6);
+  EXPECT_NEAR(us.start_s(), 1e-5, 1e-15);
+  CsvSeriesOptions o;
+  o.units = {{"t", "ms"}};
+  EXPECT_NEAR(parse_csv_series("t,v\n0,1\n1,2\n2,3\n", "rec.csv", o).rate_Hz(), 1000.0, 1e-9);
+  const std::string unknown = error_of("t[min],v\n0,1\n1,2\n");
+  EXPECT_NE(unknown.find("rec.csv:1:1"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("column t[min]"), std::string::npos) << unknown;
+}
+
+TEST(CsvReader, ARateOffByAThousandNamesTheClocksUnit) {
+  CsvSeriesOptions o;
+  o.rate_Hz = 1000.0;
+  const std::string m = error_of("t[s],v\n0,1\n1,2\n2,3\n", o);  // milliseconds under [s]
+  EXPECT_NE(m.find("the clock looks like it counts ms, not s: head the column t[ms]"),
+            std::string::npos)
+      << m;
+}
+
+TEST(CsvReader, AnalysedValuesOfAKnownUnitMustBePhysical) {
+  CsvSeriesOptions o;
+  o.column = "P1";
+  const std::string kpa = error_of("t[s],P1[Pa]\n0,300\n0.001,301\n0.002,302\n", o);
+  EXPECT_NE(kpa.find("rec.csv:2: column 2 (P1[Pa])"), std::string::npos) << kpa;
+  EXPECT_NE(kpa.find("look like gauge values or kPa"), std::string::npos) << kpa;
+  EXPECT_NO_THROW(parse_csv_series("t[s],P1[kPa g]\n0,0\n0.001,1\n0.002,2\n", "rec.csv", o));
+  const std::string mm = error_of("t[s],v[m/s]\n0,20\n0.001,35\n0.002,2\n");
+  EXPECT_NE(mm.find("look like mm/s"), std::string::npos) << mm;
+  o.column = "u";  // a unit this reader does not know only labels the series
+  EXPECT_EQ(parse_csv_series("t[s],u[V]\n0,1e6\n0.001,2\n", "rec.csv", o).channels().front().unit,
+            "V");
+}
+
 TEST(CsvReader, AHeaderlessClockColumnIsNotAnalysedByDefault) {
   CsvSeriesOptions o;
   o.rate_Hz = 1000.0;

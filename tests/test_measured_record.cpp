@@ -103,7 +103,7 @@ TEST(MeasuredRecord, PressureOutOfRange) {
     return fmt::format("{},0,{},200000", t, i == 50 ? -5.0 : 300000.0);
   }));
   EXPECT_NE(m.find("rec.csv:52:3"), std::string::npos) << m;
-  EXPECT_NE(m.find("below zero"), std::string::npos) << m;
+  EXPECT_NE(m.find("look like gauge values or kPa"), std::string::npos) << m;
   m = message_of(record("t[s],v[m/s],P1[MPa],P2[Pa]", 120, [](int, double t) {
     return fmt::format("{},0,300000,200000", t);  // Pa labelled MPa
   }));
@@ -165,5 +165,47 @@ TEST(MeasuredRecord, SpeedAboveAnyCylinder) {
     return fmt::format("{},{},300000,200000", t, i == 150 ? 35.0 : 0.02);
   }));
   EXPECT_NE(m.find("rec.csv:152:2"), std::string::npos) << m;
-  EXPECT_NE(m.find("m/s vs mm/s"), std::string::npos) << m;
+  EXPECT_NE(m.find("look like mm/s"), std::string::npos) << m;
+}
+
+TEST(MeasuredRecord, KiloPascalOrGaugeUnderPascalIsRefused) {
+  // kPa values under [Pa]: 300 Pa absolute, far below the atmosphere.
+  std::string m = message_of(record("t[s],v[m/s],P1[Pa],P2[Pa]", 120,
+                                    [](int, double t) { return fmt::format("{},0,300,200", t); }));
+  EXPECT_NE(m.find("rec.csv:2:3 (P1[Pa])"), std::string::npos) << m;
+  EXPECT_NE(m.find("look like gauge values or kPa"), std::string::npos) << m;
+  // Gauge values under [Pa]: chamber 2 vented to 0 Pa gauge reads 0 Pa absolute.
+  m = message_of(record("t[s],v[m/s],P1[Pa],P2[Pa]", 120, [](int i, double t) {
+    return fmt::format("{},0,200000,{}", t, i < 60 ? 100000.0 : 0.0);
+  }));
+  EXPECT_NE(m.find("rec.csv:62:4 (P2[Pa])"), std::string::npos) << m;
+  // Marked gauge, the same values are read right.
+  const auto r = parse_measured_record(record("t[s],v[m/s],P1[Pa g],P2[Pa g]", 120,
+                                              [](int i, double t) {
+                                                return fmt::format("{},0,200000,{}", t,
+                                                                   i < 60 ? 100000.0 : 0.0);
+                                              }),
+                                       "rec.csv", {});
+  EXPECT_DOUBLE_EQ(r.p2_Pa.back(), kStandardAmbientPa);
+}
+
+TEST(MeasuredRecord, AboveTheSupplyIsRefused) {
+  RecordReadOptions o;
+  o.plausible.supply_Pa = 0.4e6;
+  const std::string m =
+      message_of(record("t[s],v[m/s],P1[kPa],P2[kPa]", 120,
+                        [](int, double t) { return fmt::format("{},0,900,200", t); }),
+                 {}, o);
+  EXPECT_NE(m.find("supply"), std::string::npos) << m;
+}
+
+TEST(MeasuredRecord, UnitsOptionFillsHeadersWithoutBrackets) {
+  RecordReadOptions o;
+  o.units = {{"t", "ms"}, {"P1", "kPa"}, {"P2", "kPa g"}};
+  const auto r = parse_measured_record(
+      record("t,v,P1,P2", 120, [](int i, double) { return fmt::format("{},0,300,100", i); }),
+      "rec.csv", {}, o);
+  EXPECT_NEAR(r.dt_s(), 1e-3, 1e-12);
+  EXPECT_DOUBLE_EQ(r.p1_Pa[0], 300e3);
+  EXPECT_DOUBLE_EQ(r.p2_Pa[0], 100e3 + kStandardAmbientPa);
 }

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
-#include <regex>
 #include <cstdint>
 #include <optional>
+#include <regex>
 
 #include "commands.hpp"
 #include "flag_names.hpp"
@@ -16,6 +16,7 @@
 #include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
+#include "stage_progress.hpp"
 
 namespace pneumachaos::cli {
 namespace {
@@ -35,9 +36,12 @@ struct AnalyzeArgs {
   std::string column = "v";
   std::string quantity;  ///< velocity, other, or empty: from the column (record_is_velocity)
   std::optional<double> rate_Hz, from_s, to_s;
+  std::vector<std::string> units;
   std::string json;
   std::string series_out;
   bool no_wolf = false;
+  bool explain = false;
+  bool quiet = false;
   bool no_embedding_spread = false;
   std::optional<std::string> surrogates, seed, verdict_seeds, dimension, delay, theiler;
 };
@@ -105,6 +109,7 @@ Action add_analyze(CLI::App& app) {
   cmd->add_option("--rate", args->rate_Hz,
                   "sample rate [Hz] of a file without a time column (with one, the two must "
                   "agree)");
+  add_units_option(cmd, args->units);
   cmd->add_option("--from", args->from_s,
                   "analyse from this time [s] on the record's clock (e.g. 2 to skip a start-up "
                   "transient, as `reproduce` does; default: the first sample)");
@@ -116,6 +121,10 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_flag("--quiet", args->quiet,
+                "no progress line (shown on a terminal when the analysis runs longer than 2 s)");
+  cmd->add_flag("--explain", args->explain,
+                "print the rule that combines the evidence into the verdict (a paragraph)");
   cmd->add_flag("--no-embedding-spread", args->no_embedding_spread,
                 "leave out of the divergence exponent's uncertainty its values at embedding "
                 "dimensions m - 1 and m + 1 (two fewer divergence curves, about 15 % less work on "
@@ -141,14 +150,20 @@ Action add_analyze(CLI::App& app) {
     CsvSeriesOptions input;
     input.column = args->column;
     input.rate_Hz = args->rate_Hz;
+    input.units = parse_unit_overrides(args->units, "--units");
     const TimeSeries series = with_flag_names(
         FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
         [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
     const Channel& channel = series.channels().front();
     AnalysisOptions chosen = options;
     chosen.velocity = record_is_velocity(args->quantity, channel);
-    const AnalysisResult r = analyzed(channel, series.rate_Hz(), chosen, args->file);
-    fmt::print("{}", analysis_summary(r, channel.name, channel.unit));
+    AnalysisResult r;
+    {
+      StageProgress progress("analyze", !args->quiet);
+      chosen.on_stage = [&progress](const char* stage) { progress.stage(stage); };
+      r = analyzed(channel, series.rate_Hz(), chosen, args->file);
+    }
+    fmt::print("{}", analysis_summary(r, channel.name, channel.unit, args->explain));
     // The JSON and the curves appear together or not at all.
     OutputSet outputs;
     if (!args->json.empty()) {

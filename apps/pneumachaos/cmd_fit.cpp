@@ -23,6 +23,7 @@ struct FitArgs {
   std::vector<std::string> free;
   std::string json, scenario_out, plot_out;
   identify::RecordColumns columns;
+  std::vector<std::string> units;
   std::optional<double> segment_s, pressure_scale_Pa, velocity_scale_mm_s;
   std::optional<int> max_iterations;
   bool verbose = false;
@@ -46,6 +47,7 @@ void add_fit_options(CLI::App* cmd, FitArgs& a) {
                   "scripts and figure")
       ->check(output_directory_check());
   add_record_column_options(cmd, a.columns);
+  add_units_option(cmd, a.units);
   cmd->add_option("--segment", a.segment_s, "segment length [s] of the final fit (default 0.2)")
       ->check(positive_number_check());
   cmd->add_option("--pressure-scale", a.pressure_scale_Pa,
@@ -115,7 +117,7 @@ Action add_fit(CLI::App& app) {
         args->free.empty() ? identify::default_free_keys(start) : args->free;
     identify::check_free_keys(start, free);  // before reading: a bad key is exit 2 at once
     const identify::MeasuredRecord record = identify::read_measured_record(
-        args->record, args->columns, identify::read_options_for(start));
+        args->record, args->columns, record_read_options(start, args->scenario, args->units));
     const identify::FitOptions options = fit_options_from(*args);
     // A fit that does not converge throws RunError: exit 3 and nothing written.
     const identify::FitResult r = identify::fit_model(record, start, free, options);

@@ -24,6 +24,7 @@ Action add_friction(CLI::App& app) {
     std::string json, series_out, scenario_out;
     std::vector<std::string> models;
     identify::RecordColumns columns;
+    std::vector<std::string> units;
     bool pressure_dependent = false;
     std::optional<int> window;
     int max_iterations = 200;
@@ -62,19 +63,16 @@ Action add_friction(CLI::App& app) {
                   "(exit 3) only when no model converged")
       ->check(positive_number_check());
   add_record_column_options(cmd, args->columns);
+  add_units_option(cmd, args->units);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     identify::FrictionFitOptions fit = identify::fit_options_for(
         scenario, args->models, args->pressure_dependent, "--model");
     fit.max_iterations = args->max_iterations;
     identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
-    if (args->window) {
-      if (*args->window < 3 || *args->window % 2 == 0)
-        throw Error("--window", fmt::format("expected an odd number of samples >= 3, got {}", *args->window));
-      settings.sg_half_width = static_cast<std::size_t>(*args->window / 2);
-    }
+    if (args->window) identify::set_smoothing_window(settings, *args->window, "--window");
     const identify::MeasuredRecord record = identify::read_measured_record(
-        args->file, args->columns, identify::read_options_for(scenario));
+        args->file, args->columns, record_read_options(scenario, args->scenario, args->units));
     const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
     const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
     fmt::print("{}", identify::friction_summary(estimate, fits));

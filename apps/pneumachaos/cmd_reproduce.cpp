@@ -3,7 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "commands.hpp"
+#include "interrupt_hint.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 
@@ -38,6 +41,11 @@ Action add_reproduce(CLI::App& app) {
       o->rig = build_scenario(rig->file, rig->sets);
       o->rig_source = rig_source(*rig);
     }
+    // Its sweeps keep their finished runs: running the command again resumes them.
+    const InterruptHint hint(fmt::format(
+        "\nreproduce: interrupted; the finished sweep runs are kept in {}: run the same command "
+        "again to continue the report from them\n",
+        (std::filesystem::path(o->out_dir) / "sweeps").string()));
     const ReproduceResult r = reproduce(*o);
     fmt::print("reproduce: {} figures; {}; report: {}\n", r.figures.size(),
                claims_headline(count_claims(r.claims)), r.index_html);

@@ -60,8 +60,10 @@ Action add_simulate(CLI::App& app) {
   return [args]() {
     const Scenario scenario = scenario_of(*args);
     for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "simulate: note: {}\n", n);
-    SimulationResult result = simulate(Plant(scenario), scenario.run);
-    fmt::print(stderr, "simulate: {}\n", describe(result.summary));
+    const Plant plant(scenario);
+    SimulationResult result = simulate(plant, scenario.run);
+    fmt::print(stderr, "simulate: {}\n",
+               describe(result.summary, !plant.seal_friction().has_stiction()));
     if (!result.summary.ok()) {
       fmt::print(stderr, "simulate: the run failed; no output written\n");
       return kExitRunFailed;

@@ -30,7 +30,8 @@ Action add_stability(CLI::App& app) {
   add_scenario_options(cmd, args->scenario);
   cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
   cmd->add_option("--position-mm", args->position_mm,
-                  "piston position for the chamber volumes [mm] (default: mid-stroke)");
+                  "piston position for the chamber volumes [mm] (default: "
+                  "cylinder.frozen_position_mm when the scenario sets it, else mid-stroke)");
   cmd->add_flag("--map", args->map, "evaluate over a grid (default: the paper's S1 x S2 grid)");
   cmd->add_option("--grid", args->grids,
                   "grid axis KEY=FROM:TO:STEP in the key's unit (with --map; repeatable)");

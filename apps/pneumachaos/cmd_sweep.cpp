@@ -1,7 +1,6 @@
 // `pneumachaos sweep`: repeated runs over a grid, each judged by the analysis; resumable.
 
 #include <fmt/format.h>
-
 #include <unistd.h>
 
 #include <charconv>
@@ -9,6 +8,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "interrupt_hint.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
@@ -40,50 +40,12 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   }
   const SweepRun run = simulate_run(spec, point, repeat);
   const RunRecord r = judge_run(spec, run);
-  fmt::print(stderr, "{}\n{}\n", RunRecord::csv_header(), r.encode());
+  fmt::print(stderr, "sweep: run {}:{} replayed; as runs.csv records it:\n", point, repeat);
+  for (const auto& [name, value] : r.named_fields())
+    fmt::print(stderr, "  {:<22} {}\n", name, value);
   if (!run.sim.summary.ok()) return kExitRunFailed;
   return write_series_csv(run.sim.series, path);
 }
-
-// Ctrl-C (or a TERM) during a sweep: the journal keeps every finished run, so the message says
-// how to continue, then the signal ends the process as it would have. Only
-// write(2) in the handler; an ignored SIGINT (a background job of a script) stays ignored.
-class ResumeHintOnSignal {
- public:
-  explicit ResumeHintOnSignal(const std::string& out) {
-    message() = fmt::format(
-        "\nsweep: interrupted; the finished runs are kept in {}: run the same command with "
-        "--resume to finish the sweep\n",
-        out);
-    for (int sig : {SIGINT, SIGTERM}) {
-      struct sigaction now {}, before {};
-      sigaction(sig, nullptr, &before);
-      if (before.sa_handler == SIG_IGN) continue;
-      now.sa_handler = &ResumeHintOnSignal::handle;
-      sigemptyset(&now.sa_mask);
-      now.sa_flags = SA_RESETHAND;  // the second signal, or the re-raise, acts as the default
-      sigaction(sig, &now, nullptr);
-      restore_.push_back({sig, before});
-    }
-  }
-  ~ResumeHintOnSignal() {
-    for (const auto& [sig, action] : restore_) sigaction(sig, &action, nullptr);
-  }
-  ResumeHintOnSignal(const ResumeHintOnSignal&) = delete;
-  ResumeHintOnSignal& operator=(const ResumeHintOnSignal&) = delete;
-
- private:
-  static std::string& message() {
-    static std::string m;
-    return m;
-  }
-  static void handle(int sig) {
-    const std::string& m = message();
-    [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, m.data(), m.size());
-    ::raise(sig);  // SA_RESETHAND: the default action now ends the process
-  }
-  std::vector<std::pair<int, struct sigaction>> restore_;
-};
 
 struct SweepArgs {
   ScenarioArgs scenario;
@@ -211,8 +173,12 @@ Action add_sweep(CLI::App& app) {
     options.out_dir = args->out;
     options.resume = args->resume;
     options.threads = args->threads;
-    std::optional<ResumeHintOnSignal> hint;
-    if (!args->out.empty()) hint.emplace(args->out);
+    std::optional<InterruptHint> hint;
+    if (!args->out.empty())
+      hint.emplace(
+          fmt::format("\nsweep: interrupted; the finished runs are kept in {}: run the same "
+                      "command with --resume to finish the sweep\n",
+                      args->out));
     const SweepSummary s = run_sweep(spec, options);
     if (!s.wrote_files) return kExitOk;  // another MPI rank reports
     print_sweep_summary(spec, s, args->out);

@@ -38,6 +38,15 @@ CLI::Validator output_directory_check();
 /// --column-t/-v/-P1/-P2/-x/-a: the header names of a measured record's columns.
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns);
 
+/// --units COLUMN=UNIT (repeatable): the unit of a column whose header has no brackets.
+void add_units_option(CLI::App* cmd, std::vector<std::string>& entries);
+
+/// How a measured record is read for a scenario-driven command: the scenario's ambient pressure
+/// and stroke, the --units entries, and the supply as a plausibility bound only when the user
+/// named the rig (a scenario file or --set): the built-in scenario's supply is not theirs.
+identify::RecordReadOptions record_read_options(const Scenario& scenario, const ScenarioArgs& args,
+                                                const std::vector<std::string>& units);
+
 /// An integer option read as text, so that a bad value is an Error naming the option `name`
 /// (exit code 2): "expected an integer" or "out of range: must be >= min".
 long long integer_option(const std::string& name, const std::string& text, long long min);

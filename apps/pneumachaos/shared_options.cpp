@@ -86,6 +86,13 @@ void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) 
                   "header name of an acceleration column (default a; optional)");
 }
 
+void add_units_option(CLI::App* cmd, std::vector<std::string>& entries) {
+  cmd->add_option("--units", entries,
+                  "unit of a column whose header has no brackets (repeatable), e.g. --units t=ms "
+                  "--units \"P1=kPa g\"; a header's own brackets, e.g. t[ms] or P1[kPa g], say "
+                  "the same (docs/reference)");
+}
+
 // The integer options are read as text and checked here, so that a bad value is a
 // pneumachaos::Error naming the option (exit code 2) like every other bad input.
 long long integer_option(const std::string& name, const std::string& text, long long min) {

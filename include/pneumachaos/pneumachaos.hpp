@@ -18,6 +18,7 @@
 #include "pneumachaos/identify/friction_output.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
+#include "pneumachaos/io/column_units.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 #include "pneumachaos/io/csv_writer.hpp"
 #include "pneumachaos/model/parameter_grid.hpp"

@@ -5,25 +5,41 @@ Bad input raises ValueError with the same message as the command line; a run tha
 the GIL, so threads of a notebook keep running.
 """
 
-import io
-import json
-import os
-import sys
-import time
+# The module's names are its API alone (__all__); what it uses is imported under a leading
+# underscore.
+import io as _io
+import json as _json
+import os as _os
+import sys as _sys
+import time as _time
+from collections.abc import Mapping as _Mapping
 
-import numpy as np
+import numpy as _np
 
 from . import _core
 
 __all__ = ["Scenario", "SimulationResult", "AnalysisResult", "simulate", "analyze",
-           "stability", "stability_map", "model_lyapunov", "sweep", "calibrate"]
+           "stability", "stability_map", "model_lyapunov", "friction", "fit", "sweep",
+           "calibrate"]
 
 
 class Scenario:
     """Every parameter of a run. Keys and units as in `pneumachaos scenario --keys`."""
 
     def __init__(self, core=None):
-        self._core = core if core is not None else _core.Scenario.default()
+        """Scenario() is the built-in default scenario, as Scenario.default(). `core` is for the
+        module's own use (a compiled scenario, as the other constructors pass it); a file is
+        loaded with Scenario.from_toml(path), and anything else is refused."""
+        if core is None:
+            core = _core.Scenario.default()
+        elif isinstance(core, (str, bytes, _os.PathLike)):
+            raise ValueError(f"Scenario: got the path {core!r}; load a scenario file with "
+                             "Scenario.from_toml(path)")
+        elif not isinstance(core, _core.Scenario):
+            raise ValueError(f"Scenario: expected no argument (the default scenario), got "
+                             f"{type(core).__name__}; use Scenario.default() or "
+                             "Scenario.from_toml(path)")
+        self._core = core
 
     @classmethod
     def default(cls):
@@ -41,7 +57,7 @@ class Scenario:
         IS s. For a changed copy that leaves this scenario alone, use with_value(key, value)."""
         if isinstance(value, str):
             self._core.set_word(key, value)
-        elif isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+        elif isinstance(value, bool) or not isinstance(value, (int, float, _np.floating, _np.integer)):
             raise ValueError(f"Scenario.set: {key}: expected a number or a word, got {value!r}")
         else:
             self._core.set_number(key, float(value))
@@ -68,8 +84,10 @@ class Scenario:
         return Scenario(self._core.copy())
 
 
-class SimulationResult:
-    """A time response: t, x, v, P1, P2, ... as numpy arrays (SI units, see .units)."""
+class SimulationResult(_Mapping):
+    """A time response: t, x, v, P1, P2, ... as numpy arrays (SI units, see .units), reached
+    as attributes (r.v) or as a mapping of channel names (r["v"], "v" in r, r.keys(),
+    r.items()); to_json() gives the whole result as JSON text."""
 
     def __init__(self, raw):
         self.ok = raw["ok"]
@@ -89,17 +107,33 @@ class SimulationResult:
     def channels(self):
         return list(self._channels)
 
+    def __getitem__(self, name):
+        return self._channels[name]
+
+    def __iter__(self):
+        return iter(self._channels)
+
+    def __len__(self):
+        return len(self._channels)
+
+    def to_json(self):
+        return _json.dumps({key: (value.tolist() if isinstance(value, _np.ndarray) else value)
+                            for key, value in self.to_dict().items()})
+
     def to_dict(self):
         return {"summary": self.summary, "termination": self.termination,
                 "rate_Hz": self.rate_Hz, "units": self.units, **self._channels}
 
 
-class AnalysisResult:
-    """Every index of `pneumachaos analyze` (as in its --json output, in .json) and the
-    curves as numpy arrays (.curves: frequency_Hz, psd, acf, divergence, wolf_*)."""
+class AnalysisResult(_Mapping):
+    """Every index of `pneumachaos analyze`: a mapping of its --json output's fields
+    (r["lyapunov"], "verdict" in r, r.keys(), r.items(); the same dict in .json, the same
+    text from to_json()) and the curves as numpy arrays (.curves: frequency_Hz, psd, acf,
+    divergence, wolf_*)."""
 
     def __init__(self, text, curves):
-        self.json = json.loads(text)
+        self._text = text
+        self.json = _json.loads(text)
         self.curves = dict(curves)
 
     @property
@@ -108,6 +142,15 @@ class AnalysisResult:
 
     def __getitem__(self, key):
         return self.json[key]
+
+    def __iter__(self):
+        return iter(self.json)
+
+    def __len__(self):
+        return len(self.json)
+
+    def to_json(self):
+        return self._text
 
 
 def _scenario(scenario):
@@ -132,74 +175,119 @@ def simulate(scenario=None, duration_s=None, rate_Hz=None):
     return result
 
 
+def _samples(x):
+    """A record's samples as an array; the compiled core checks them (1-D, real, finite, not
+    empty) naming the argument."""
+    return x if isinstance(x, _np.ndarray) else _np.asarray(x)
+
+
+def _names(value, argument):
+    """A list of strings from a list or tuple; a single string is refused naming the argument
+    (it would be read as its characters)."""
+    if isinstance(value, (str, bytes)):
+        raise ValueError(f"{argument}: expected a list of strings, got the string {value!r}; "
+                         f"write [{value!r}]")
+    return [str(v) for v in value]
+
+
 def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verdict_seeds=5,
-            velocity=True, embedding_spread=True):
+            velocity=True, embedding_spread=True, surrogates=39):
     """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
-    rate_Hz. dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1
-    test's; verdict_seeds (odd): seeds the verdict is decided on where that test could turn
-    it (verdict["seed_agreement"] holds the tally). velocity: x is a velocity, where zero means
-    rest, and stick-slip is judged from its rests; False for any other signal (not judged).
-    embedding_spread: the divergence exponent's uncertainty also covers its values at embedding
-    dimensions m - 1 and m + 1 (as `analyze`)."""
+    rate_Hz, with the numbers of `pneumachaos analyze` given the same record, seed and options.
+    dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1 test's and the
+    surrogates'; verdict_seeds (odd): seeds the verdict is decided on where a random test could
+    turn it (verdict["seed_agreement"] holds the tally). velocity: x is a velocity, where zero
+    means rest, and stick-slip is judged from its rests; False for any other signal (not
+    judged). embedding_spread: the divergence exponent's uncertainty also covers its values at
+    embedding dimensions m - 1 and m + 1. surrogates: IAAFT surrogates for the test against
+    linear noise (default 39 as on the command line; 0 = off, else 19 to 999)."""
     options = _core.AnalysisOptions()
     options.wolf = bool(wolf)
     options.velocity = bool(velocity)
     options.embedding_spread = bool(embedding_spread)
     for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler),
-                        ("seed", seed), ("verdict_seeds", verdict_seeds)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-            raise ValueError(f"{name}: expected a whole number >= 0, got {value!r}")
-        setattr(options, name, int(value))
-    return AnalysisResult(*_core.analyze(np.asarray(x), float(rate_Hz), options))
+                        ("seed", seed), ("verdict_seeds", verdict_seeds),
+                        ("surrogates", surrogates)):
+        setattr(options, name, _whole(name, value, 0))
+    return AnalysisResult(*_core.analyze(_samples(x), float(rate_Hz), options))
 
 
 def stability(scenario=None):
     """Equilibrium, the paper's a1/b1 and damping coefficient, the full model's eigenvalues
     and both verdicts, as `pneumachaos stability --json` gives them."""
-    return json.loads(_core.stability_json(_scenario(scenario)._core))
+    return _json.loads(_core.stability_json(_scenario(scenario)._core))
 
 
 def stability_map(scenario=None, grid=()):
     """The stability verdict over a grid ("KEY=FROM:TO:STEP" strings; default: the paper's
     S1 x S2 grid) as a dict of numpy arrays, one per column of `stability --map`."""
-    text = _core.stability_map_csv(_scenario(scenario)._core, list(grid))
-    table = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, dtype=None,
+    text = _core.stability_map_csv(_scenario(scenario)._core, _names(grid, "grid"))
+    table = _np.genfromtxt(_io.StringIO(text), delimiter=",", names=True, dtype=None,
                           encoding="utf-8", deletechars="", autostrip=True)
-    return {name: np.atleast_1d(table[name]) for name in table.dtype.names}
+    return {name: _np.atleast_1d(table[name]) for name in table.dtype.names}
 
 
 def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s=0.02):
     """The model's own largest Lyapunov exponent (two trajectories, renormalised), as
     `pneumachaos lyapunov --json` gives it."""
-    return json.loads(_core.model_lyapunov_json(_scenario(scenario)._core, float(transient_s),
+    return _json.loads(_core.model_lyapunov_json(_scenario(scenario)._core, float(transient_s),
                                                 float(measure_s), float(renormalize_s)))
 
 
-def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False):
+def _whole(name, value, least):
+    """A whole number >= least, else ValueError naming the argument."""
+    if isinstance(value, bool) or not isinstance(value, (int, _np.integer)) or value < least:
+        raise ValueError(f"{name}: expected a whole number >= {least}, got {value!r}")
+    return int(value)
+
+
+def _positive(name, value):
+    """A number > 0, else ValueError naming the argument."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, _np.integer, _np.floating)) \
+            or not value > 0:
+        raise ValueError(f"{name}: expected a number > 0, got {value!r}")
+    return float(value)
+
+
+def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False, window=None,
+             max_iterations=200):
     """Seal friction from a measured record, as `pneumachaos friction --json` gives it: t [s],
-    v [m/s], P1 and P2 [Pa, absolute] as 1-D arrays of one length; geometry and moving mass
-    from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre" (default
-    all). Raises ValueError for bad input, RuntimeError when a fit does not converge."""
-    return json.loads(_core.friction_json(t, v, P1, P2, _scenario(scenario)._core,
-                                          list(models), bool(pressure_dependent)))
+    v [m/s], P1 and P2 [Pa, absolute] as 1-D arrays (or lists) of one length; geometry and
+    moving mass from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre"
+    (default all). window: the Savitzky-Golay window in samples (odd, >= 3; default: chosen from
+    the noise); max_iterations: allowed to each fit (default 200), as --window and
+    --max-iterations. Raises ValueError for bad input, RuntimeError when no fit converges."""
+    window = 0 if window is None else _whole("window", window, 1)
+    return _json.loads(_core.friction_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
+                                           _scenario(scenario)._core, _names(models, "models"),
+                                           bool(pressure_dependent), window,
+                                           _whole("max_iterations", max_iterations, 1)))
 
 
-def fit(t, v, P1, P2, scenario=None, free=()):
+def fit(t, v, P1, P2, scenario=None, free=(), segment_s=0.2, pressure_scale_Pa=1000.0,
+        velocity_scale_mm_per_s=30.0, max_iterations=50):
     """Identifies the scenario keys named in `free` (default: S1, S2, the seal's Fc and Fs)
-    from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it.
-    Raises ValueError for bad input, RuntimeError when the fit does not converge."""
-    return json.loads(_core.fit_json(t, v, P1, P2, _scenario(scenario)._core, list(free)))
+    from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it,
+    with its --segment, --pressure-scale, --velocity-scale and --max-iterations (same
+    defaults). Raises ValueError for bad input, RuntimeError when the fit does not converge."""
+    options = _core.FitOptions()
+    options.segment_s = _positive("segment_s", segment_s)
+    options.pressure_scale_Pa = _positive("pressure_scale_Pa", pressure_scale_Pa)
+    options.velocity_scale_mm_per_s = _positive("velocity_scale_mm_per_s", velocity_scale_mm_per_s)
+    options.max_iterations = _whole("max_iterations", max_iterations, 1)
+    return _json.loads(_core.fit_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
+                                      _scenario(scenario)._core, _names(free, "free"), options))
 
 
 def _print_progress():
     state = {"last": 0.0}
 
     def show(done, total):
-        now = time.monotonic()
+        now = _time.monotonic()
         if done == total or now - state["last"] >= 1.0:
             state["last"] = now
             end = "\n" if done == total else ""
-            print(f"\rsweep: {done}/{total} runs", end=end, file=sys.stderr, flush=True)
+            print(f"\rsweep: {done}/{total} runs", end=end, file=_sys.stderr, flush=True)
     return show
 
 
@@ -213,7 +301,7 @@ def _refuse_under_mpi():
     run the whole sweep into the same directory (two writers), and the MPI module that shares
     runs between ranks belongs to the command line, not to the Python package, so the call is
     refused before anything is written."""
-    launcher = next((v for v in _MPI_LAUNCHER_VARIABLES if v in os.environ), None)
+    launcher = next((v for v in _MPI_LAUNCHER_VARIABLES if v in _os.environ), None)
     if launcher is not None:
         raise RuntimeError(
             f"sweep: started under an MPI launcher ({launcher} is set): the Python module "
@@ -241,8 +329,7 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     _refuse_under_mpi()
     for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
                         ("surrogates", surrogates), ("adaptive_step", adaptive_step)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-            raise ValueError(f"sweep: {name}: expected a whole number >= 0, got {value!r}")
+        _whole(f"sweep: {name}", value, 0)
     if progress is True:
         progress = _print_progress()
     elif progress is False:
@@ -258,7 +345,7 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
         if not model.enabled:
             raise ValueError(f"sweep: model_{name}: needs model_exponent=True")
         setattr(model, name, float(value))
-    return _core.sweep(_scenario(scenario)._core, list(grid), int(repeats), int(seed), str(out),
+    return _core.sweep(_scenario(scenario)._core, _names(grid, "grid"), int(repeats), int(seed), str(out),
                        int(threads), bool(resume), progress, bool(wolf), int(surrogates), model,
                        bool(adaptive), int(adaptive_step))
 
@@ -267,8 +354,7 @@ def calibrate(spec, out_dir, threads=0, resume=False):
     """Runs the calibration SPEC (a TOML file, docs/guide/calibrate.md) into out_dir, as
     `pneumachaos calibrate SPEC --out DIR`; resume=True continues one journalled there. Returns
     calibration.json as a dict: the best point, its fitted and its predicted claims."""
-    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 0:
-        raise ValueError(f"calibrate: threads: expected a whole number >= 0, got {threads!r}")
+    _whole("calibrate: threads", threads, 0)
     if not out_dir:
         raise ValueError("calibrate: out_dir: a directory for the results is required")
-    return json.loads(_core.calibrate_json(str(spec), str(out_dir), int(threads), bool(resume)))
+    return _json.loads(_core.calibrate_json(str(spec), str(out_dir), int(threads), bool(resume)))

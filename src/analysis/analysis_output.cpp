@@ -151,8 +151,41 @@ nlohmann::json seed_agreement_json(const SeedAgreement& a) {
 
 }  // namespace
 
+namespace {
+
+// Words of `text` in lines of at most `width` characters, each line indented by `indent`.
+std::string wrapped(const std::string& text, std::size_t width, const std::string& indent) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += indent + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return line.empty() ? out : out + indent + line + "\n";
+}
+
+// One line of the verdict's evidence; the verdict's whole rule (a paragraph) only when asked,
+// wrapped, else a pointer to it.
+std::string evidence_line(const std::string& line, bool explain) {
+  static const std::string rule = "[--] rule: ";
+  if (!line.starts_with(rule)) return "  " + line + "\n";
+  if (!explain)
+    return "  [--] rule: the rule that combines these lines is printed by --explain (and held "
+           "in the JSON's verdict evidence)\n";
+  return "  [--] rule:\n" + wrapped(line.substr(rule.size()), 92, "      ");
+}
+
+}  // namespace
+
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
-                             const std::string& unit) {
+                             const std::string& unit, bool explain) {
   // The answer first: the verdict and the exponent, then how they were reached.
   std::string out = fmt::format("verdict: {} (chaotic: {}, stick-slip: {})\n",
                                 regime_name(r.verdict.regime), r.verdict.chaotic ? "yes" : "no",
@@ -216,7 +249,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
     out += evidence_summary(r);
   }
   out += fmt::format("evidence for the verdict ({}):\n", regime_name(r.verdict.regime));
-  for (const auto& line : r.verdict.evidence) out += "  " + line + "\n";
+  for (const auto& line : r.verdict.evidence) out += evidence_line(line, explain);
   return out;
 }
 

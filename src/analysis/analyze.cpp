@@ -240,6 +240,10 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
   e.lyapunov_slope_uncertainty_per_s = r.divergence.slope_uncertainty_per_s;
 }
 
+void stage(const AnalysisOptions& o, const char* what) {
+  if (o.on_stage) o.on_stage(what);
+}
+
 }  // namespace
 
 AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const AnalysisOptions& o) {
@@ -247,6 +251,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   o.validate();
   AnalysisResult r;
   r.rate_Hz = rate_Hz;
+  stage(o, "statistics and noise floor");
   describe_record(x, o, r);
   RegimeEvidence& e = r.evidence;
   if (!(r.standard_deviation > 0.0)) {
@@ -254,6 +259,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
     r.verdict = decide_regime(e, o.verdict);
     return r;
   }
+  stage(o, "spectrum and autocorrelation");
   r.maxima_spacing_samples = mean_maxima_spacing(x);
   r.period_samples = r.maxima_spacing_samples;
   r.spectrum = welch_spectrum(x, rate_Hz, o.spectrum);
@@ -268,10 +274,14 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   // The spectral lines before the exponents: they tell whether the maxima follow a harmonic.
   r.lines = spectral_lines(x);
   r.period_samples = orbital_period(r.maxima_spacing_samples, r.lines, x.size());
+  stage(o, "embedding (mutual information, Cao)");
   choose_embedding(x, rate_Hz, o, r);
+  stage(o, "0-1 test, prediction and surrogates");
   const SeededTestSetup seeded = run_evidence_tests(x, o, r);
   const OrbitScales orbit = orbit_above_noise(x, r);
+  stage(o, "divergence curve and Wolf's estimator");
   run_exponents(x, rate_Hz, o, orbit, r);
+  stage(o, "self-repetition and Poincare section");
   e.repetition = self_repetition(x, rate_Hz, orbit.period,
                                  repetition_above_noise(o.verdict.repetition, r),
                                  r.acf.lag_products);
@@ -280,6 +290,7 @@ AnalysisResult analyze_series(std::span<const double> x, double rate_Hz, const A
   for (double v : r.dimension.E2) e.determinism = std::max(e.determinism, std::abs(v - 1.0));
   note_lines(r);
   r.verdict = decide_regime(e, o.verdict);
+  stage(o, "the verdict on more seeds");
   check_seed_agreement(x, o, seeded, r);
   describe_divergence(rate_Hz, o, r);
   return r;

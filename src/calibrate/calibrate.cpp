@@ -109,9 +109,18 @@ std::string measured_text_hash(const std::string& path) {
 // pressure for gauge columns and the stroke for the travel check.
 std::vector<identify::MeasuredRecord> read_records(const CalibrationSpec& spec) {
   std::vector<identify::MeasuredRecord> out;
-  for (const RecordCondition& r : spec.objective.records)
-    out.push_back(identify::read_measured_record(r.file, identify::RecordColumns{},
-                                                 identify::read_options_for(spec.base)));
+  for (const RecordCondition& r : spec.objective.records) {
+    std::error_code ec;
+    if (!fs::is_regular_file(r.file, ec))
+      throw Error(r.where, fmt::format("file = \"{}\": {}", r.file,
+                                       fs::exists(r.file, ec) ? "not a regular file"
+                                                              : "no such file (paths are relative "
+                                                                "to the spec's folder)"));
+    identify::RecordReadOptions read = identify::read_options_for(spec.base);
+    if (r.Ps_MPa) read.plausible.supply_Pa = spec.base.ambient_pressure_Pa + *r.Ps_MPa * 1e6;
+    read.units = r.units;
+    out.push_back(identify::read_measured_record(r.file, identify::RecordColumns{}, read));
+  }
   return out;
 }
 

@@ -126,9 +126,11 @@ std::string CalibrationSpec::fingerprint() const {
   }
   s += o.measured_map + ";" + conditions_text(o.fit) + "predict;" + conditions_text(predict);
   const auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{}", *v) : "-"; };
-  for (const RecordCondition& r : o.records)
+  for (const RecordCondition& r : o.records) {
     s += fmt::format("record {} {} {} {} {} {};", r.file, opt(r.S1_mm2), opt(r.S2_mm2),
                      opt(r.Ps_MPa), opt(r.m_kg), opt(r.x0_mm));
+    for (const auto& [column, unit] : r.units) s += fmt::format("unit {}={};", column, unit);
+  }
   if (o.kind == ObjectiveKind::kRecords)
     s += fmt::format("records {} {} {};", o.segment_s, o.pressure_scale_kPa,
                      o.velocity_scale_mm_per_s);

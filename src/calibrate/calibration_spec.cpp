@@ -263,6 +263,22 @@ std::optional<double> record_setting(Table& m, const char* name, const char* key
   return v;
 }
 
+// A record's `units = { t = "ms", P1 = "kPa g" }`: the units of columns without brackets.
+UnitOverrides record_units(Table& m) {
+  const toml::node* n = m.get("units");
+  if (n == nullptr) return {};
+  const char* shape = "a table of column units, e.g. units = { t = \"ms\", P1 = \"kPa g\" }";
+  const auto* t = n->as_table();
+  if (t == nullptr) throw Error(m.where("units"), fmt::format("expected {}", shape));
+  UnitOverrides out;
+  for (const auto& [column, unit] : *t) {
+    const auto* text = unit.as_string();
+    if (text == nullptr) throw Error(m.where("units"), fmt::format("expected {}", shape));
+    out.emplace(std::string(column.str()), text->get());
+  }
+  return out;
+}
+
 std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
   std::vector<RecordCondition> out;
   const char* shape = "{ file = \"run.csv\", S1_mm2, S2_mm2, Ps_MPa, m_kg }";
@@ -278,6 +294,7 @@ std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
     c.m_kg = record_setting(m, "m_kg", nullptr);
     if (c.m_kg && (!(*c.m_kg > 0.0) || *c.m_kg > 1000.0))
       throw Error(m.where("m_kg"), "expected 0 < m_kg <= 1000");
+    c.units = record_units(m);
     c.x0_mm = record_setting(m, "x0_mm", nullptr);
     if (c.x0_mm && !(*c.x0_mm >= 0.0 && *c.x0_mm <= 10000.0))
       throw Error(m.where("x0_mm"), "expected 0 <= x0_mm <= 10000");

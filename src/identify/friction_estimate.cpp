@@ -164,6 +164,12 @@ double force_noise(const std::vector<double>& F, const std::vector<double>& F_sm
 
 }  // namespace
 
+void set_smoothing_window(EstimateSettings& settings, long long window, const std::string& field) {
+  if (window < 3 || window % 2 == 0)
+    throw Error(field, fmt::format("expected an odd number of samples >= 3, got {}", window));
+  settings.sg_half_width = static_cast<std::size_t>(window / 2);
+}
+
 EstimateSettings estimate_settings_from(const Scenario& s) {
   EstimateSettings e;
   e.area_head_m2 = s.cylinder.area_head_m2();

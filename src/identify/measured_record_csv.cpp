@@ -20,93 +20,12 @@
 namespace pneumachaos::identify {
 namespace {
 
-enum class Quantity { kTime, kVelocity, kPressure, kPosition, kAcceleration };
-
-const char* accepted_units(Quantity q) {
-  switch (q) {
-    case Quantity::kTime: return "s, ms";
-    case Quantity::kVelocity: return "m/s, mm/s";
-    case Quantity::kPressure: return "Pa, kPa, MPa, bar, psi, each optionally with \"gauge\"";
-    case Quantity::kPosition: return "m, mm";
-    case Quantity::kAcceleration: return "m/s^2, mm/s^2";
-  }
-  return "";
-}
-
-// scale to SI and, for pressures, whether the reading is gauge (ambient to be added).
-struct Unit {
-  double scale = 1.0;
-  bool gauge = false;
-};
-
-Unit parse_unit(const std::string& text, Quantity q, const std::string& where,
-                const std::string& column) {
-  std::string u = text;
-  Unit unit;
-  if (q == Quantity::kPressure) {
-    // "MPa gauge", "bar g", "kPa(g)", "psig", "Pa abs"
-    std::string lower;
-    for (char c : u) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char* marker : {" gauge", "(gauge)", " (g)", "(g)", " g", " abs", "(abs)", " absolute"}) {
-      const std::string m = marker;
-      if (lower.size() > m.size() && lower.ends_with(m)) {
-        unit.gauge = m.find('g') != std::string::npos;
-        u = trim_field(u.substr(0, u.size() - m.size()));
-        break;
-      }
-    }
-    if (u == "psig") {
-      unit.gauge = true;
-      u = "psi";
-    }
-  }
-  u = trim_field(u);
-  const auto is = [&](std::initializer_list<const char*> names) {
-    return std::any_of(names.begin(), names.end(), [&](const char* n) { return u == n; });
-  };
-  bool known = true;
-  switch (q) {
-    case Quantity::kTime:
-      if (u.empty() || is({"s"})) unit.scale = 1.0;
-      else if (is({"ms"})) unit.scale = 1e-3;
-      else known = false;
-      break;
-    case Quantity::kVelocity:
-      if (u.empty() || is({"m/s"})) unit.scale = 1.0;
-      else if (is({"mm/s"})) unit.scale = 1e-3;
-      else known = false;
-      break;
-    case Quantity::kPressure:
-      if (u.empty() || is({"Pa"})) unit.scale = 1.0;
-      else if (is({"kPa"})) unit.scale = 1e3;
-      else if (is({"MPa"})) unit.scale = 1e6;
-      else if (is({"bar"})) unit.scale = 1e5;
-      else if (is({"psi"})) unit.scale = 6894.757293168;
-      else known = false;
-      break;
-    case Quantity::kPosition:
-      if (u.empty() || is({"m"})) unit.scale = 1.0;
-      else if (is({"mm"})) unit.scale = 1e-3;
-      else known = false;
-      break;
-    case Quantity::kAcceleration:
-      if (u.empty() || is({"m/s^2", "m/s2", "m/s/s"})) unit.scale = 1.0;
-      else if (is({"mm/s^2", "mm/s2"})) unit.scale = 1e-3;
-      else known = false;
-      break;
-  }
-  if (!known)
-    throw Error(where, fmt::format("column {}: unit \"{}\" is not understood; expected {}", column,
-                                   text, accepted_units(q)));
-  return unit;
-}
-
 struct ColumnSpec {
   ColumnSpec(const char* r, Quantity q) : role(r), quantity(q) {}
   const char* role;  // t, v, P1, ...
   Quantity quantity;
   int index = -1;
-  Unit unit;
+  ColumnUnit unit;
   std::vector<double> values;
 };
 
@@ -129,7 +48,7 @@ struct ColumnSet {
 
 // Finds every column by name and reads its unit; the missing ones are all named at once.
 void locate_columns(ColumnSet& c, const RecordColumns& names, const std::string& origin,
-                    std::size_t header_line) {
+                    std::size_t header_line, const RecordReadOptions& options) {
   const std::string where = fmt::format("{}:{}", origin, header_line);
   const auto& h = c.header;
   c.t.index = find_column(h, {names.t, "t", "time"});
@@ -147,32 +66,21 @@ void locate_columns(ColumnSet& c, const RecordColumns& names, const std::string&
     throw Error(where, fmt::format("missing column{} {}; the header has: {}{}",
                                    missing.size() > 1 ? "s" : "", fmt::join(missing, ", "),
                                    fmt::join(h, ", "), separator_hint(h)));
+  const std::vector<std::string> units = header_units(h, options.units, where);
   for (ColumnSpec* col : c.used()) {
-    const std::string& name = h[static_cast<std::size_t>(col->index)];
-    col->unit = parse_unit(header_unit(name), col->quantity,
-                           fmt::format("{}:{}:{}", origin, header_line, col->index + 1), name);
-    if (col->unit.gauge && col->quantity != Quantity::kPressure)
-      throw Error(where, fmt::format("column {}: only pressures can be gauge", name));
+    const auto i = static_cast<std::size_t>(col->index);
+    col->unit = parse_unit(units[i], col->quantity, h[i],
+                           fmt::format("{}:{}:{}", origin, header_line, i + 1));
   }
 }
 
 // One cell in SI units, absolute pressure, checked for what no rig can produce.
 double read_cell(const std::string& field, const ColumnSpec& c, const RecordReadOptions& options,
-                 const std::string& where) {
+                 const std::string& where, const std::string& column) {
   double value = parse_cell(trim_field(field), where) * c.unit.scale;
-  if (c.quantity == Quantity::kVelocity && std::abs(value) > options.max_speed_m_per_s)
-    throw Error(where, fmt::format("speed {} m/s is above {} m/s, faster than any pneumatic "
-                                   "cylinder: is the unit right (m/s vs mm/s)?",
-                                   std::abs(value), options.max_speed_m_per_s));
-  if (c.quantity != Quantity::kPressure) return value;
   if (c.unit.gauge) value += options.ambient_Pa;
-  if (value < 0.0)
-    throw Error(where, fmt::format("absolute pressure {} Pa is below zero{}", value,
-                                   c.unit.gauge ? "" : " (is the column gauge? mark its "
-                                                       "unit, e.g. [MPa gauge])"));
-  if (value > kMaxRecordPressurePa)
-    throw Error(where, fmt::format("absolute pressure {} Pa is above {} MPa: wrong unit?", value,
-                                   kMaxRecordPressurePa * 1e-6));
+  const std::string problem = implausible_value(value, c.unit, column, options.plausible);
+  if (!problem.empty()) throw Error(where, problem);
   return value;
 }
 
@@ -190,7 +98,8 @@ std::vector<std::size_t> read_rows(CsvLines& lines, ColumnSet& c, const std::str
                               fields.size()));
     for (ColumnSpec* col : c.used())
       col->values.push_back(read_cell(fields[static_cast<std::size_t>(col->index)], *col, options,
-                                      c.cell(origin, n, *col)));
+                                      c.cell(origin, n, *col),
+                                      c.header[static_cast<std::size_t>(col->index)]));
     line_of.push_back(n);
     const auto& t = c.t.values;
     const std::size_t k = t.size();
@@ -247,6 +156,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
                                      const RecordColumns& names,
                                      const RecordReadOptions& options) {
   options.validate();
+  refuse_binary(text, origin);
   CsvLines lines(text);
   std::string line;
   if (!lines.next(line)) throw Error(origin, "the file is empty: expected a header line");
@@ -257,7 +167,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
                     separator_hint({line}));
   ColumnSet c;
   for (const auto& f : split_csv_fields(line)) c.header.push_back(trim_field(f));
-  locate_columns(c, names, origin, header_line);
+  locate_columns(c, names, origin, header_line, options);
   const std::vector<std::size_t> line_of = read_rows(lines, c, origin, options);
   constexpr std::size_t kMinSamples = 100;
   if (c.t.values.size() < kMinSamples)
@@ -280,6 +190,7 @@ MeasuredRecord parse_measured_record(const std::string& text, const std::string&
 RecordReadOptions read_options_for(const Scenario& scenario) {
   RecordReadOptions read;
   read.ambient_Pa = scenario.ambient_pressure_Pa;
+  read.plausible.supply_Pa = scenario.supply_pressure_Pa();
   if (!scenario.cylinder.volumes_frozen()) read.stroke_m = scenario.cylinder.stroke_m;
   return read;
 }

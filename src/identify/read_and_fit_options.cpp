@@ -21,7 +21,8 @@ void RecordReadOptions::validate() const {
   check(std::isfinite(ambient_Pa) && ambient_Pa > 0.0, "record ambient_Pa", ambient_Pa,
         "a positive pressure [Pa abs]");
   if (stroke_m) check(*stroke_m > 0.0, "record stroke_m", *stroke_m, "> 0 when given");
-  check(max_speed_m_per_s > 0.0, "record max_speed_m_per_s", max_speed_m_per_s, "> 0");
+  check(plausible.max_speed_m_per_s > 0.0, "record max_speed_m_per_s", plausible.max_speed_m_per_s,
+        "> 0");
 }
 
 void FrictionFitOptions::validate() const {

@@ -13,9 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "pneumachaos/core/error.hpp"
 #include "io/csv_fields.hpp"
 #include "io/csv_text.hpp"
+#include "pneumachaos/core/error.hpp"
+#include "pneumachaos/io/column_units.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -81,6 +82,7 @@ struct Layout {
   std::vector<std::string> names;
   std::size_t header_line = 0;
   int value = -1, time = -1;
+  ColumnUnit time_unit, value_unit;
 };
 
 // Without a header the column is given by its number (1 = first); "v", the default, means
@@ -96,6 +98,19 @@ int numbered_column(const std::string& column, std::size_t count, const std::str
                                    count, column));
   }
   return n - 1;
+}
+
+// The units of the time and analysed columns, from their brackets or --units: the clock is
+// converted to seconds; the analysed values keep their unit, which only labels them, but a
+// known one is checked for values no rig produces.
+void read_units(Layout& l, const CsvSeriesOptions& options, const std::string& where) {
+  const std::vector<std::string> units = header_units(l.names, options.units, where);
+  const auto unit_of = [&](int col, std::optional<Quantity> q) {
+    const auto i = static_cast<std::size_t>(col);
+    return parse_unit(units[i], q, l.names[i], fmt::format("{}:{}", where, col + 1));
+  };
+  if (l.time >= 0) l.time_unit = unit_of(l.time, Quantity::kTime);
+  l.value_unit = unit_of(l.value, std::nullopt);
 }
 
 Layout read_layout(CsvLines& lines, std::string& first, const std::string& origin,
@@ -117,9 +132,20 @@ Layout read_layout(CsvLines& lines, std::string& first, const std::string& origi
   if (l.value < 0) {
     std::string known;
     for (const auto& h : l.names) known += (known.empty() ? "" : ", ") + h;
-    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}{}", options.column,
-                                   known, separator_hint(l.names)));
+    const bool number = std::all_of(options.column.begin(), options.column.end(),
+                                    [](unsigned char c) { return std::isdigit(c) != 0; });
+    throw Error(where, fmt::format("no column \"{}\" in the header; it has: {}{}{}", options.column,
+                                   known, separator_hint(l.names),
+                                   number ? "; a number selects a column only in a file without a "
+                                            "header: give the column's name"
+                                          : ""));
   }
+  if (l.has_header)
+    read_units(l, options, where);
+  else if (!options.units.empty())
+    throw Error(where,
+                "--units names columns of a header, and the file has none: give the "
+                "rate (--rate) and read the values in their own unit");
   if (!options.rate_Hz && l.time < 0) {
     throw Error(where, l.has_header ? "no time column (t, time, t[s]) in the header: give the "
                                       "sample rate (--rate)"
@@ -146,6 +172,17 @@ double read_cell(std::string_view field, std::size_t line_no, int col, const Lay
                     fmt::format("{}:{}: column {} ({})", origin, line_no, col + 1, l.names[i]));
 }
 
+// A value of a known unit, in SI (absolute for a gauge pressure), must be physical.
+void check_plausible(double value, std::size_t line_no, const Layout& l,
+                     const std::string& origin) {
+  const ColumnUnit& u = l.value_unit;
+  const double si = value * u.scale + (u.gauge ? kStandardAmbientPa : 0.0);
+  const std::string& name = l.names[static_cast<std::size_t>(l.value)];
+  const std::string problem = implausible_value(si, u, name, PlausibleRange{});
+  if (!problem.empty())
+    throw Error(fmt::format("{}:{}: column {} ({})", origin, line_no, l.value + 1, name), problem);
+}
+
 // One data line into the columns; time must increase.
 void read_row(const std::string& line, std::size_t line_no, const Layout& l,
               const std::string& origin, Columns& c) {
@@ -160,8 +197,10 @@ void read_row(const std::string& line, std::size_t line_no, const Layout& l,
     return read_cell(fields[static_cast<std::size_t>(col)], line_no, col, l, origin);
   };
   c.values.push_back(cell(l.value));
+  if (l.value_unit.quantity != Quantity::kOther)
+    check_plausible(c.values.back(), line_no, l, origin);
   if (l.time < 0) return;
-  c.times.push_back(cell(l.time));
+  c.times.push_back(cell(l.time) * l.time_unit.scale);
   const std::size_t n = c.times.size();
   if (n >= 2 && !(c.times[n - 1] > c.times[n - 2])) {
     throw Error(fmt::format("{}:{}: column {} ({})", origin, line_no, l.time + 1,
@@ -192,6 +231,20 @@ double rate_from_times(const std::vector<double>& times, const std::string& orig
 }
 
 bool same_rate(double a, double b, double jitter) { return std::abs(a - b) <= jitter * b; }
+
+// What to do when --rate and the clock disagree: when they differ by a power of 1000 the
+// clock's unit is the likely mistake (milliseconds under t[s]), and the unit it counts in is
+// named; otherwise one of the two is wrong.
+std::string clock_hint(const Layout& l, double file_rate_Hz, double given_rate_Hz) {
+  const std::string counts =
+      unit_with_scale(Quantity::kTime, l.time_unit.scale * file_rate_Hz / given_rate_Hz);
+  const std::string name = header_name(l.names[static_cast<std::size_t>(l.time)]);
+  if (counts.empty()) return "drop the rate option to use the time column, or correct one of them";
+  return fmt::format(
+      "the clock looks like it counts {0}, not {1}: head the column {2}[{0}] (or "
+      "give --units {2}={0} to a header without brackets)",
+      counts, l.time_unit.text.empty() ? "s" : l.time_unit.text, name);
+}
 
 // A file without a header whose analysed column is the default first one, and that first
 // column rises at a constant step like a time column, is refused: analysing the clock calls
@@ -251,6 +304,7 @@ std::vector<std::string> split_csv_fields(const std::string& line) {
 TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
                             const CsvSeriesOptions& options) {
   options.validate();
+  refuse_binary(text, origin);
   // Spreadsheet exports often start with a UTF-8 byte-order mark; it is not part of a name.
   CsvLines lines(text);
   std::string line;
@@ -273,13 +327,14 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
     const auto t = static_cast<std::size_t>(layout.time);
     throw Error(CsvSeriesOptions::kRateField,
                 fmt::format("{} Hz disagrees with the time column \"{}\" of {}, sampled at {:.6g} "
-                            "Hz: drop the rate option to use the time column, or correct one of them",
-                            *options.rate_Hz, layout.names[t], origin, rate_Hz));
+                            "Hz: {}",
+                            *options.rate_Hz, layout.names[t], origin, rate_Hz,
+                            clock_hint(layout, rate_Hz, *options.rate_Hz)));
   }
   TimeSeries series(rate_Hz, timed ? c.times.front() : 0.0);
   const std::string& header = layout.names[static_cast<std::size_t>(layout.value)];
-  series.add_channel(layout.has_header ? header_name(header) : header,
-                     layout.has_header ? header_unit(header) : "", std::move(c.values));
+  series.add_channel(layout.has_header ? header_name(header) : header, layout.value_unit.text,
+                     std::move(c.values));
   return series;
 }
 

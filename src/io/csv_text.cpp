@@ -51,6 +51,14 @@ std::string separator_hint(const std::vector<std::string>& names) {
          "with `tr ',;' '.,' < in.csv > out.csv`";
 }
 
+void refuse_binary(std::string_view text, const std::string& origin) {
+  if (text.substr(0, 4096).find('\0') == std::string_view::npos) return;
+  throw Error(origin,
+              "is not a text file (binary bytes: an image, an archive or a spreadsheet's "
+              "own format?): expected a record as comma- or blank-separated text, e.g. "
+              "a CSV export");
+}
+
 double parse_cell(const std::string& f, const std::string& where) {
   double v = 0.0;
   const char* end = f.data() + f.size();

@@ -24,6 +24,10 @@ int find_column(const std::vector<std::string>& names, const std::vector<std::st
 /// commas), what to do about it, starting with "; "; else "". Appended to a "no column" error.
 std::string separator_hint(const std::vector<std::string>& names);
 
+/// Throws Error(origin) when `text` is not text: a NUL byte among its first 4096 bytes (an
+/// image, an archive, a spreadsheet's binary format), instead of echoing its bytes.
+void refuse_binary(std::string_view text, const std::string& origin);
+
 /// A finite double, or Error(where) saying what the cell holds instead.
 double parse_cell(const std::string& field, const std::string& where);
 

@@ -295,7 +295,7 @@ class ReportBuilder {
     claims_.sign_rule = sign_rule_counts(smap_, maps_[0]);
     result_.claims = evaluate_claims(claims_);
     write_file(o_.out_dir + "/claims.json", claims_json(result_.claims));
-    result_.index_html = o_.out_dir + "/index.html";
+    result_.index_html = (std::filesystem::path(o_.out_dir) / "index.html").string();
     write_file(result_.index_html,
                report_html(result_.figures, result_.claims, scenario_to_toml(spec_.base),
                            settings(), o_.rig ? o_.rig_source : std::string()));

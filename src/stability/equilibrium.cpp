@@ -191,7 +191,10 @@ class SteadyMotion {
 
 double checked_position(const Plant& plant, const EquilibriumOptions& options) {
   const double stroke = plant.geometry().stroke_m;
-  const double x0 = options.position_m < 0.0 ? 0.5 * stroke : options.position_m;
+  // By default the piston sits where the scenario freezes the chamber volumes, else mid-stroke.
+  const CylinderGeometry& g = plant.geometry();
+  const double automatic = g.volumes_frozen() ? g.frozen_position_m : 0.5 * stroke;
+  const double x0 = options.position_m < 0.0 ? automatic : options.position_m;
   if (x0 > stroke) {
     throw Error("position_m", fmt::format("{} m lies beyond the stroke {} m", x0, stroke));
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "io/json_quantity.hpp"
@@ -17,6 +18,21 @@ const char* circuit_name(const Scenario& s) {
 
 }  // namespace
 
+namespace {
+
+// Why the equilibrium sits where it does: the scenario's frozen volumes, mid-stroke (the
+// default), or a position the caller chose.
+std::string position_reason(const Scenario& s, double position_m) {
+  const CylinderGeometry& c = s.cylinder;
+  if (c.volumes_frozen() && std::abs(position_m - c.frozen_position_m) < 1e-9)
+    return "the scenario's cylinder.frozen_position_mm";
+  if (!c.volumes_frozen() && std::abs(position_m - 0.5 * c.stroke_m) < 1e-9)
+    return "mid-stroke, the default; --position-mm sets another";
+  return "--position-mm";
+}
+
+}  // namespace
+
 std::string stability_table(const Scenario& s, const StabilityResult& r) {
   const double Pa = s.ambient_pressure_Pa;
   std::string out = fmt::format(
@@ -27,10 +43,10 @@ std::string stability_table(const Scenario& s, const StabilityResult& r) {
   const Equilibrium& e = r.equilibrium;
   const bool meter_out = s.circuit.kind == CircuitKind::kMeterOut;
   out += fmt::format(
-      "equilibrium at x = {:.1f} mm: v0 = {:.3f} mm/s, P10 = {:.4f} MPa, P20 = {:.4f} MPa (gauge), "
-      "friction {:.3f} N, slope B = {:.4g} N*s/m\n",
-      e.position_m * 1e3, e.v0_m_per_s * 1e3, (e.P10_Pa - Pa) * 1e-6, (e.P20_Pa - Pa) * 1e-6,
-      e.friction_N, e.slope_Ns_per_m);
+      "equilibrium at x = {:.1f} mm ({}): v0 = {:.3f} mm/s, P10 = {:.4f} MPa, P20 = {:.4f} MPa "
+      "(gauge), friction {:.3f} N, slope B = {:.4g} N*s/m\n",
+      e.position_m * 1e3, position_reason(s, e.position_m), e.v0_m_per_s * 1e3,
+      (e.P10_Pa - Pa) * 1e-6, (e.P20_Pa - Pa) * 1e-6, e.friction_N, e.slope_Ns_per_m);
   out +=
       fmt::format("paper ({}): {} = {:.4g} N*s/m, {} = {:.4g} N/m, zeta = {:.4g} -> {}\n",
                   meter_out ? "eqs. 6-9" : "eqs. 10-11", meter_out ? "a1" : "b1",

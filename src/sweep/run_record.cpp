@@ -103,6 +103,12 @@ std::string RunRecord::csv_header() {
   return h;
 }
 
+std::vector<std::pair<std::string, std::string>> RunRecord::named_fields() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const Field& f : kTable) out.emplace_back(f.name, f.write(*this));
+  return out;
+}
+
 std::string RunRecord::encode() const {
   std::string line;
   for (const Field& f : kTable) {

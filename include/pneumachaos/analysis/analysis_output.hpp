@@ -10,9 +10,10 @@
 
 namespace pneumachaos {
 
-/// `unit` is the series' unit (e.g. "m/s"), used to state the PSD's unit.
+/// `unit` is the series' unit (e.g. "m/s"), used to state the PSD's unit. explain: the
+/// verdict's whole rule is printed (wrapped) among the evidence; else a line says how to see it.
 std::string analysis_summary(const AnalysisResult& r, const std::string& name,
-                             const std::string& unit);
+                             const std::string& unit, bool explain = false);
 
 /// Keys include lyapunov.wolf.value, lyapunov.divergence.value and .uncertainty, each with a
 /// unit ("1/s"; bits/s beside it), and verdict.regime, verdict.chaotic, verdict.stick_slip.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct AnalysisOptions {
   /// (AnalysisResult::seed_agreement). Odd, 1 to 99; 1: the first seed alone.
   std::size_t verdict_seeds = 5;
   static constexpr ErrorField kVerdictSeedsField{"analysis.verdict_seeds", "verdict_seeds"};
+  /// Called as each stage of the analysis begins, with its name (e.g. "divergence curve"), for
+  /// a progress display on a long record; empty: not called.
+  std::function<void(const char* stage)> on_stage;
   void validate() const;
 };
 

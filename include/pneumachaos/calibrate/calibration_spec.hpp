@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/io/column_units.hpp"
 #include "pneumachaos/model/parameter_grid.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
@@ -55,6 +56,9 @@ struct RecordCondition {
   std::string file;  ///< the CSV's path (relative to the spec's folder)
   std::optional<double> S1_mm2, S2_mm2, Ps_MPa, m_kg;  ///< m_kg: the total moving mass
   std::optional<double> x0_mm;  ///< the piston's position at the first sample, without an x column
+  /// Units of columns whose header has no brackets, e.g. {"t", "ms"}
+  /// (docs/reference/record-units.md).
+  UnitOverrides units;
   std::string where;
 };
 

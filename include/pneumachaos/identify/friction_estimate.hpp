@@ -41,6 +41,10 @@ struct EstimateSettings {
 /// acceleration).
 EstimateSettings estimate_settings_from(const Scenario& scenario);
 
+/// Sets sg_half_width from a Savitzky-Golay window of `window` samples (odd, >= 3); throws
+/// Error(field), naming the option or argument, for any other.
+void set_smoothing_window(EstimateSettings& settings, long long window, const std::string& field);
+
 struct StickInterval {
   std::size_t begin = 0, end = 0;  ///< samples [begin, end)
   double t_begin_s = 0.0, t_end_s = 0.0;

@@ -8,15 +8,10 @@
 #include <string>
 
 #include "pneumachaos/identify/measured_record.hpp"
+#include "pneumachaos/io/column_units.hpp"
 #include "pneumachaos/model/scenario.hpp"
 
 namespace pneumachaos::identify {
-
-/// Standard atmosphere (Pa): the ambient pressure added to gauge readings when no scenario
-/// gives one (the scenario key ambient.pressure_kPa does).
-inline constexpr double kStandardAmbientPa = 101325.0;
-/// Largest absolute pressure accepted (Pa): above the range of any pneumatic rig.
-inline constexpr double kMaxRecordPressurePa = 10.0e6;
 
 /// Header names of the columns (matched exactly, or as the name before "[unit]"). Empty x or
 /// a: the column is optional and looked for under its default name only.
@@ -35,25 +30,28 @@ struct RecordReadOptions {
   /// Cylinder stroke (m): when given, a velocity whose integral travels further than
   /// 1.5 strokes (plus 10 mm) is refused as being in the wrong unit.
   std::optional<double> stroke_m;
-  /// Speeds above this (m/s) are refused whatever the stroke: no pneumatic cylinder moves
-  /// at 10 m/s, a velocity in mm/s labelled m/s does.
-  double max_speed_m_per_s = 10.0;
+  /// Values no rig produces, refused naming the likely mistake (kPa or gauge values under a
+  /// [Pa] header, mm/s under [m/s]); the supply is known when a scenario gives it.
+  PlausibleRange plausible;
+  /// Units of columns whose header has no brackets (`--units`), e.g. {"t", "ms"}.
+  UnitOverrides units;
   /// Throws Error naming the field that is out of range.
   void validate() const;
 };
 
-/// Accepted units: time s, ms; velocity m/s, mm/s; pressure Pa, kPa, MPa, bar, psi, each
-/// optionally followed by "gauge" (or "g": "bar g"); position m, mm; acceleration m/s^2,
-/// mm/s^2. A column without a unit is taken as SI. Throws Error naming file:line[:column] for:
-/// a missing column (naming it and listing the header), an unknown unit, a cell that is not
-/// a finite number, a row with the wrong number of fields, an absolute pressure below 0 or
-/// above 10 MPa, non-increasing or non-uniform time, a velocity implausibly large for the
-/// stroke, fewer than 100 samples. Path "-" reads standard input.
 /// The reading options a scenario implies: its ambient pressure for gauge columns and its
 /// stroke for the travel check (none when the scenario freezes its chamber volumes: a virtual
 /// rig's long record may travel beyond the stroke, a real one cannot).
 RecordReadOptions read_options_for(const Scenario& scenario);
 
+/// Units as parse_unit() accepts them (time s, ms, us; velocity m/s, mm/s; pressure Pa, kPa,
+/// MPa, bar, psi, each optionally gauge, "kPa g"; position m, mm; acceleration m/s^2, mm/s^2),
+/// from the header's brackets or options.units; a column without either is taken as SI.
+/// Throws Error naming file:line[:column] for: a missing column (naming it and listing the
+/// header), an unknown unit, a cell that is not a finite number, a row with the wrong number
+/// of fields, a value implausible_value() refuses (an absolute pressure below 50 kPa or above
+/// twice the supply, a speed above 10 m/s), non-increasing or non-uniform time, a velocity
+/// implausibly large for the stroke, fewer than 100 samples. Path "-" reads standard input.
 MeasuredRecord read_measured_record(const std::string& path, const RecordColumns& names,
                                     const RecordReadOptions& options = {});
 

@@ -8,6 +8,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
+#include "pneumachaos/io/column_units.hpp"
 
 namespace pneumachaos {
 
@@ -21,6 +22,11 @@ struct CsvSeriesOptions {
   /// Largest allowed deviation of a time step from the median step, relative to it; A/D
   /// timestamps jitter a little, a missing sample (a step of 2) is refused.
   double time_jitter = 0.01;
+  /// Units of columns whose header has no brackets (`--units`), e.g. {"t", "ms"}. The time
+  /// column's unit (s, ms, us; s without one) is converted to seconds; the analysed column's
+  /// unit labels the series, and a known one (m/s, kPa, ...) is checked for values no rig
+  /// produces (parse_unit, implausible_value).
+  UnitOverrides units;
   static constexpr ErrorField kRateField{"csv.rate_Hz", "sampling rate"};
   /// Throws Error naming the field that is out of range.
   void validate() const;

@@ -29,7 +29,8 @@ SimulationResult simulate(const Plant& plant, const RunParams& run);
 SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,
                                const RunParams& run);
 
-/// A one-paragraph human-readable account of a run's summary.
-std::string describe(const IntegrationSummary& summary);
+/// A one-paragraph human-readable account of a run's summary. smooth_seal: the seal model has
+/// no stiction (gms, lugre), so a run without stick/slip mode switches may still stick.
+std::string describe(const IntegrationSummary& summary, bool smooth_seal = false);
 
 }  // namespace pneumachaos

@@ -10,7 +10,8 @@
 namespace pneumachaos {
 
 struct EquilibriumOptions {
-  /// Piston position at which the volumes are evaluated [m]; negative: mid-stroke.
+  /// Piston position at which the volumes are evaluated [m]; negative: where the scenario
+  /// freezes the chamber volumes (cylinder.frozen_position_mm), else mid-stroke.
   double position_m = -1.0;
   /// Rod-side pressures scanned for sign changes of the force balance before bracketing each
   /// root (a Stribeck curve can give several equilibria).

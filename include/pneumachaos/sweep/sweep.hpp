@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
@@ -104,6 +105,8 @@ struct RunRecord {
   [[nodiscard]] std::string encode() const;          ///< one CSV line, doubles round-trip exactly
   static RunRecord decode(const std::string& line);  ///< throws Error for a malformed line
   static std::string csv_header();
+  /// Each column of runs.csv with this run's value as encode() writes it, in the file's order.
+  [[nodiscard]] std::vector<std::pair<std::string, std::string>> named_fields() const;
 };
 
 /// Simulates and analyses run `repeat` of grid point `point`. Never throws for a bad point or
