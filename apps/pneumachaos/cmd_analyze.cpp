@@ -83,6 +83,39 @@ bool record_is_velocity(const std::string& quantity, const Channel& c) {
          std::regex_match(c.unit, speed_unit);
 }
 
+// Reads the record, analyses it (with progress on a terminal) and writes the summary, and the
+// JSON and the curves together or not at all.
+int run_analyze(const AnalyzeArgs& a) {
+  const AnalysisOptions options = analysis_options(a);
+  CsvSeriesOptions input;
+  input.column = a.column;
+  input.rate_Hz = a.rate_Hz;
+  input.units = parse_unit_overrides(a.units, "--units");
+  const TimeSeries series = with_flag_names(
+      FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
+      [&] { return time_window(read_csv_series(a.file, input), a.from_s, a.to_s); });
+  const Channel& channel = series.channels().front();
+  AnalysisOptions chosen = options;
+  chosen.velocity = record_is_velocity(a.quantity, channel);
+  AnalysisResult r;
+  {
+    StageProgress progress("analyze", !a.quiet);
+    chosen.on_stage = [&progress](const char* stage) { progress.stage(stage); };
+    r = analyzed(channel, series.rate_Hz(), chosen, a.file);
+  }
+  fmt::print("{}", analysis_summary(r, channel.name, channel.unit, a.explain));
+  // The JSON and the curves appear together or not at all.
+  OutputSet outputs;
+  if (!a.json.empty()) {
+    outputs.add(a.json) << analysis_json(r, a.file, channel.name, channel.unit) << '\n';
+  }
+  if (!a.series_out.empty()) {
+    write_analysis_series(r, channel.values, a.series_out, channel.unit, outputs);
+  }
+  outputs.commit();
+  return kExitOk;
+}
+
 }  // namespace
 
 Action add_analyze(CLI::App& app) {
@@ -145,36 +178,7 @@ Action add_analyze(CLI::App& app) {
                   "embedding delay in samples (>= 1; default: mutual information)");
   cmd->add_option("--theiler", args->theiler,
                   "Theiler window in samples (>= 0; default: max(delay, first ACF zero))");
-  return [args]() {
-    const AnalysisOptions options = analysis_options(*args);
-    CsvSeriesOptions input;
-    input.column = args->column;
-    input.rate_Hz = args->rate_Hz;
-    input.units = parse_unit_overrides(args->units, "--units");
-    const TimeSeries series = with_flag_names(
-        FlagNames{{kWindowFromField.id, "--from"}, {kWindowToField.id, "--to"}},
-        [&] { return time_window(read_csv_series(args->file, input), args->from_s, args->to_s); });
-    const Channel& channel = series.channels().front();
-    AnalysisOptions chosen = options;
-    chosen.velocity = record_is_velocity(args->quantity, channel);
-    AnalysisResult r;
-    {
-      StageProgress progress("analyze", !args->quiet);
-      chosen.on_stage = [&progress](const char* stage) { progress.stage(stage); };
-      r = analyzed(channel, series.rate_Hz(), chosen, args->file);
-    }
-    fmt::print("{}", analysis_summary(r, channel.name, channel.unit, args->explain));
-    // The JSON and the curves appear together or not at all.
-    OutputSet outputs;
-    if (!args->json.empty()) {
-      outputs.add(args->json) << analysis_json(r, args->file, channel.name, channel.unit) << '\n';
-    }
-    if (!args->series_out.empty()) {
-      write_analysis_series(r, channel.values, args->series_out, channel.unit, outputs);
-    }
-    outputs.commit();
-    return kExitOk;
-  };
+  return [args]() { return run_analyze(*args); };
 }
 
 }  // namespace pneumachaos::cli
