@@ -154,8 +154,7 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
-  cmd->add_flag("--quiet", args->quiet,
-                "no progress line (shown on a terminal when the analysis runs longer than 2 s)");
+  add_quiet_flag(cmd, args->quiet);
   cmd->add_flag("--explain", args->explain,
                 "print the rule that combines the evidence into the verdict (a paragraph)");
   cmd->add_flag("--no-embedding-spread", args->no_embedding_spread,

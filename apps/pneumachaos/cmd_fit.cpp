@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "stage_progress.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
@@ -27,6 +28,7 @@ struct FitArgs {
   std::optional<double> segment_s, pressure_scale_Pa, velocity_scale_mm_s;
   std::optional<int> max_iterations;
   bool verbose = false;
+  bool quiet = false;
 };
 
 void add_fit_options(CLI::App* cmd, FitArgs& a) {
@@ -34,6 +36,7 @@ void add_fit_options(CLI::App* cmd, FitArgs& a) {
       ->required()
       ->check(CLI::ExistingFile);
   add_scenario_options(cmd, a.scenario);
+  add_quiet_flag(cmd, a.quiet);
   cmd->add_option("--free", a.free,
                   "a scenario key to fit (repeatable), e.g. --free circuit.S1_mm2 "
                   "--free cylinder.dead_volume_head_cm3; default: circuit.S1_mm2, "
@@ -120,7 +123,9 @@ Action add_fit(CLI::App& app) {
         args->record, args->columns, record_read_options(start, args->scenario, args->units));
     const identify::FitOptions options = fit_options_from(*args);
     // A fit that does not converge throws RunError: exit 3 and nothing written.
-    const identify::FitResult r = identify::fit_model(record, start, free, options);
+    const identify::FitResult r =
+        with_progress("fit", "segment-wise simulation and least squares", !args->quiet,
+                      [&] { return identify::fit_model(record, start, free, options); });
     print_fit(record, r, options);
     OutputSet outputs;
     if (!args->json.empty()) outputs.add(args->json) << identify::fit_json(r, options, record);

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "stage_progress.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/identify/friction_fits.hpp"
@@ -26,6 +27,7 @@ Action add_friction(CLI::App& app) {
     identify::RecordColumns columns;
     std::vector<std::string> units;
     bool pressure_dependent = false;
+    bool quiet = false;
     std::optional<int> window;
     int max_iterations = 200;
   };
@@ -64,6 +66,7 @@ Action add_friction(CLI::App& app) {
       ->check(positive_number_check());
   add_record_column_options(cmd, args->columns);
   add_units_option(cmd, args->units);
+  add_quiet_flag(cmd, args->quiet);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     identify::FrictionFitOptions fit = identify::fit_options_for(
@@ -73,8 +76,13 @@ Action add_friction(CLI::App& app) {
     if (args->window) identify::set_smoothing_window(settings, *args->window, "--window");
     const identify::MeasuredRecord record = identify::read_measured_record(
         args->file, args->columns, record_read_options(scenario, args->scenario, args->units));
-    const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
-    const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
+    const bool show = !args->quiet;
+    const identify::FrictionEstimate estimate =
+        with_progress("friction", "the friction force from the record", show,
+                      [&] { return identify::estimate_friction(record, settings); });
+    const identify::FrictionFits fits = with_progress(
+        "friction", "fitting the friction laws", show,
+        [&] { return identify::fit_friction(estimate, fit); });
     fmt::print("{}", identify::friction_summary(estimate, fits));
     for (const auto& w : fits.warnings) fmt::print(stderr, "friction: warning: {}\n", w);
     identify::require_converged(fits);  // none converged: its reason, exit 3, nothing written

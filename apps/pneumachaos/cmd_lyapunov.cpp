@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "commands.hpp"
+#include "stage_progress.hpp"
 #include "flag_names.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
@@ -24,6 +25,7 @@ Action add_lyapunov(CLI::App& app) {
     double tolerance_factor = 1.0;
     std::string running_out;
     bool json = false;
+    bool quiet = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -51,6 +53,7 @@ Action add_lyapunov(CLI::App& app) {
   cmd->add_option("--running-out", args->running_out, "CSV file for the running estimate")
       ->check(output_file_check());
   cmd->add_flag("--json", args->json, "print every number with its unit as JSON");
+  add_quiet_flag(cmd, args->quiet);
   return [args]() {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     const Plant plant(scenario);
@@ -64,8 +67,10 @@ Action add_lyapunov(CLI::App& app) {
                           {ModelLyapunovOptions::kSeparationField.id, "--separation"},
                           {IntegratorOptions::kRelativeToleranceField.id, "--tolerance-factor"},
                           {IntegratorOptions::kAbsoluteToleranceField.id, "--tolerance-factor"}};
-    const ModelLyapunovResult r = with_flag_names(
-        flags, [&] { return plant_lyapunov(plant, scenario.run, o, args->tolerance_factor); });
+    const ModelLyapunovResult r = with_flag_names(flags, [&] {
+      return with_progress("lyapunov", "two trajectories, renormalised", !args->quiet,
+                           [&] { return plant_lyapunov(plant, scenario.run, o, args->tolerance_factor); });
+    });
     if (!r.ok) {
       fmt::print(stderr, "lyapunov: {}\n", r.message);
       return kExitRunFailed;

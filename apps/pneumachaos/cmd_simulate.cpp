@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "stage_progress.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/measured_channels.hpp"
@@ -20,6 +21,7 @@ struct SimulateArgs {
   std::optional<double> rate_Hz;
   std::uint64_t seed = 0;
   std::string output;
+  bool quiet = false;
 };
 
 // The scenario file, the --set overrides, then the typed flags, checked once all are applied.
@@ -57,11 +59,13 @@ Action add_simulate(CLI::App& app) {
                   "measured channels");
   cmd->add_option("-o,--output", args->output, "CSV file to write (default: standard output)")
       ->check(output_file_check());
+  add_quiet_flag(cmd, args->quiet);
   return [args]() {
     const Scenario scenario = scenario_of(*args);
     for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "simulate: note: {}\n", n);
     const Plant plant(scenario);
-    SimulationResult result = simulate(plant, scenario.run);
+    SimulationResult result = with_progress("simulate", "integrating", !args->quiet,
+                                            [&] { return simulate(plant, scenario.run); });
     fmt::print(stderr, "simulate: {}\n",
                describe(result.summary, !plant.seal_friction().has_stiction()));
     if (!result.summary.ok()) {

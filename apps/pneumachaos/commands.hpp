@@ -38,6 +38,9 @@ CLI::Validator output_directory_check();
 /// --column-t/-v/-P1/-P2/-x/-a: the header names of a measured record's columns.
 void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns);
 
+/// --quiet: no progress line (StageProgress shows one on a terminal after 2 s of work).
+void add_quiet_flag(CLI::App* cmd, bool& quiet);
+
 /// --units COLUMN=UNIT (repeatable): the unit of a column whose header has no brackets.
 void add_units_option(CLI::App* cmd, std::vector<std::string>& entries);
 

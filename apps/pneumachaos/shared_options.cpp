@@ -86,6 +86,11 @@ void add_record_column_options(CLI::App* cmd, identify::RecordColumns& columns) 
                   "header name of an acceleration column (default a; optional)");
 }
 
+void add_quiet_flag(CLI::App* cmd, bool& quiet) {
+  cmd->add_flag("--quiet", quiet,
+                "no progress line (shown on a terminal when the work runs longer than 2 s)");
+}
+
 void add_units_option(CLI::App* cmd, std::vector<std::string>& entries) {
   cmd->add_option("--units", entries,
                   "unit of a column whose header has no brackets (repeatable), e.g. --units t=ms "

@@ -35,4 +35,12 @@ class StageProgress {
   std::thread ticker_;
 };
 
+/// f() with a progress line for one stage: `command: stage (N s)`.
+template <class F>
+auto with_progress(const char* command, const char* stage, bool show, F&& f) {
+  StageProgress progress(command, show);
+  progress.stage(stage);
+  return f();
+}
+
 }  // namespace pneumachaos::cli

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# command_progress.sh CLI VARIANT: the model's long commands show their progress on a terminal
+# (a pseudo-terminal from script(1)) once they have run 2 s: `simulate` and `lyapunov` on the
+# frozen-volume rig (VARIANT, no stroke end) over 4,000 s and 2,000 s of model time (about 5
+# and 9 s of work), each stopped once its line appears; none with --quiet, nor when standard
+# error is not a terminal.
+set -uo pipefail
+cli=$(realpath "$1")
+variant=$(realpath "$2")
+command -v script >/dev/null || { echo "no script(1): skipped"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "$*"; exit 1; }
+line() { grep -qE "$1: [^(]+ \([0-9]+ s\)" "$2"; }
+
+check() {  # check NAME ARGS...: a progress line on a terminal, none with --quiet or a pipe
+  local name=$1; shift
+  local typed
+  typed=$(printf " %q" "$cli" "$name" "$@")
+  script -qfec "$typed" /dev/null >"$work/tty" 2>&1 &
+  local pid=$!
+  for _ in $(seq 1 300); do line "$name" "$work/tty" && break; sleep 0.1; done
+  kill "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+  line "$name" "$work/tty" || { cat -v "$work/tty" | head -c 400; fail "$name: no progress on a terminal"; }
+  timeout 5 script -qfec "$typed --quiet" /dev/null >"$work/quiet" 2>&1
+  line "$name" "$work/quiet" && fail "$name: progress despite --quiet"
+  timeout 5 "$cli" "$name" "$@" >/dev/null 2>"$work/err"
+  line "$name" "$work/err" && fail "$name: progress on a pipe"
+  echo "$name: progress as expected"
+}
+check simulate "$variant" --duration 4000 --rate 10 -o "$work/run.csv"
+check lyapunov "$variant" --measure 2000
