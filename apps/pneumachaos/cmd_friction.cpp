@@ -18,20 +18,61 @@
 
 namespace pneumachaos::cli {
 
+namespace {
+
+struct FrictionArgs {
+  std::string file;
+  ScenarioArgs scenario;
+  std::string json, series_out, scenario_out;
+  std::vector<std::string> models;
+  identify::RecordColumns columns;
+  std::vector<std::string> units;
+  bool pressure_dependent = false;
+  bool quiet = false;
+  std::optional<int> window;
+  int max_iterations = 200;
+};
+
+// Reads the record, estimates the friction force, fits the laws and writes what was asked.
+int run_friction(const FrictionArgs& a) {
+  const Scenario scenario = build_scenario(a.scenario.file, a.scenario.sets);
+  identify::FrictionFitOptions fit = identify::fit_options_for(
+      scenario, a.models, a.pressure_dependent, "--model");
+  fit.max_iterations = a.max_iterations;
+  identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  if (a.window) identify::set_smoothing_window(settings, *a.window, "--window");
+  const identify::MeasuredRecord record = identify::read_measured_record(
+      a.file, a.columns, record_read_options(scenario, a.scenario, a.units));
+  const bool show = !a.quiet;
+  const identify::FrictionEstimate estimate =
+      with_progress("friction", "the friction force from the record", show,
+                    [&] { return identify::estimate_friction(record, settings); });
+  const identify::FrictionFits fits = with_progress(
+      "friction", "fitting the friction laws", show,
+      [&] { return identify::fit_friction(estimate, fit); });
+  fmt::print("{}", identify::friction_summary(estimate, fits));
+  for (const auto& w : fits.warnings) fmt::print(stderr, "friction: warning: {}\n", w);
+  identify::require_converged(fits);  // none converged: its reason, exit 3, nothing written
+  const identify::ModelFit* preferred = nullptr;
+  for (const auto& f : fits.fits)
+    if (f.name == fits.preferred_model) preferred = &f;
+  if (!a.scenario_out.empty() && !preferred)
+    throw RunError("--scenario-out",
+                   "no model converged with Fc <= Fs (see above); no output written");
+  OutputSet outputs;
+  if (!a.json.empty())
+    outputs.add(a.json) << identify::friction_json(estimate, fits, settings, record.source) << '\n';
+  if (!a.series_out.empty()) identify::write_friction_series(estimate, fits, a.series_out, outputs);
+  if (!a.scenario_out.empty())
+    outputs.add(a.scenario_out) << identify::friction_scenario_toml(*preferred, record.source);
+  outputs.commit();
+  return kExitOk;
+}
+
+}  // namespace
+
 Action add_friction(CLI::App& app) {
-  struct Args {
-    std::string file;
-    ScenarioArgs scenario;
-    std::string json, series_out, scenario_out;
-    std::vector<std::string> models;
-    identify::RecordColumns columns;
-    std::vector<std::string> units;
-    bool pressure_dependent = false;
-    bool quiet = false;
-    std::optional<int> window;
-    int max_iterations = 200;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<FrictionArgs>();
   CLI::App* cmd = app.add_subcommand(
       "friction",
       "Seal friction from a measured record (t, v, P1, P2): force from the equation of motion, "
@@ -67,40 +108,7 @@ Action add_friction(CLI::App& app) {
   add_record_column_options(cmd, args->columns);
   add_units_option(cmd, args->units);
   add_quiet_flag(cmd, args->quiet);
-  return [args]() {
-    const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
-    identify::FrictionFitOptions fit = identify::fit_options_for(
-        scenario, args->models, args->pressure_dependent, "--model");
-    fit.max_iterations = args->max_iterations;
-    identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
-    if (args->window) identify::set_smoothing_window(settings, *args->window, "--window");
-    const identify::MeasuredRecord record = identify::read_measured_record(
-        args->file, args->columns, record_read_options(scenario, args->scenario, args->units));
-    const bool show = !args->quiet;
-    const identify::FrictionEstimate estimate =
-        with_progress("friction", "the friction force from the record", show,
-                      [&] { return identify::estimate_friction(record, settings); });
-    const identify::FrictionFits fits = with_progress(
-        "friction", "fitting the friction laws", show,
-        [&] { return identify::fit_friction(estimate, fit); });
-    fmt::print("{}", identify::friction_summary(estimate, fits));
-    for (const auto& w : fits.warnings) fmt::print(stderr, "friction: warning: {}\n", w);
-    identify::require_converged(fits);  // none converged: its reason, exit 3, nothing written
-    const identify::ModelFit* preferred = nullptr;
-    for (const auto& f : fits.fits)
-      if (f.name == fits.preferred_model) preferred = &f;
-    if (!args->scenario_out.empty() && !preferred)
-      throw RunError("--scenario-out",
-                     "no model converged with Fc <= Fs (see above); no output written");
-    OutputSet outputs;
-    if (!args->json.empty())
-      outputs.add(args->json) << identify::friction_json(estimate, fits, settings, record.source) << '\n';
-    if (!args->series_out.empty()) identify::write_friction_series(estimate, fits, args->series_out, outputs);
-    if (!args->scenario_out.empty())
-      outputs.add(args->scenario_out) << identify::friction_scenario_toml(*preferred, record.source);
-    outputs.commit();
-    return kExitOk;
-  };
+  return [args]() { return run_friction(*args); };
 }
 
 }  // namespace pneumachaos::cli
