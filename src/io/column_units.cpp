@@ -148,7 +148,9 @@ std::vector<std::string> header_units(const std::vector<std::string>& header,
                                       const UnitOverrides& overrides, const std::string& where) {
   std::vector<std::string> units;
   for (const std::string& h : header) units.push_back(header_unit(h));
-  for (const auto& [name, unit] : overrides) {
+  for (const auto& entry : overrides) {
+    const std::string& name = entry.first;  // a named copy: clang 15 cannot capture a binding
+    const std::string& unit = entry.second;
     const auto it = std::find_if(header.begin(), header.end(),
                                  [&](const std::string& h) { return header_name(h) == name; });
     if (it == header.end())
