@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/series_statistics.hpp"
+
 namespace pneumachaos {
 namespace {
 
@@ -52,20 +54,6 @@ bool rests_under_noise(std::span<const double> x, std::size_t first, std::size_t
          run.rms <= b.clean_change + b.max_rms * b.noise_sd;
 }
 
-// The mean of x over a window of n samples centred on each sample (shorter at the ends).
-std::vector<double> running_mean(std::span<const double> x, std::size_t n) {
-  std::vector<double> prefix(x.size() + 1, 0.0);
-  for (std::size_t i = 0; i < x.size(); ++i) prefix[i + 1] = prefix[i] + x[i];
-  std::vector<double> out(x.size());
-  const std::size_t half = n / 2;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const std::size_t lo = i >= half ? i - half : 0;
-    const std::size_t hi = std::min(x.size(), lo + n);
-    out[i] = (prefix[hi] - prefix[lo]) / static_cast<double>(hi - lo);
-  }
-  return out;
-}
-
 // The rests of x as runs [first, first + n), with the bounds they were judged by.
 struct Rests {
   RestBounds bounds;
@@ -86,7 +74,7 @@ Rests find_rests(std::span<const double> x, const VerdictOptions& o, double reco
   // sqrt(window) times smaller: a rest's edges, where the body speeds up out of it, then stay
   // outside the run instead of failing its trend test.
   const std::size_t window = o.min_rest_samples_at(noise_sd);
-  const std::vector<double> smooth = noise_sd > 0.0 ? running_mean(x, window)
+  const std::vector<double> smooth = noise_sd > 0.0 ? moving_average(x, window)
                                                     : std::vector<double>(x.begin(), x.end());
   const double noisy_band =
       o.rest_noise_sigmas * noise_sd / std::sqrt(static_cast<double>(window));
