@@ -365,9 +365,9 @@ def _refuse_under_mpi(command="sweep"):
     if launcher is not None:
         raise RuntimeError(
             f"{command}: started under an MPI launcher ({launcher} is set): the Python module "
-            f"runs a {command} on the threads of one process and cannot share it between MPI "
-            "ranks. Run Python without mpirun (threads=N uses N cores), or distribute it with "
-            f"the command line: mpirun -np N pneumachaos {command} ...")
+            "runs sweeps on the threads of one process and cannot share them between MPI "
+            "ranks. Run Python without mpirun (threads=N uses N cores), or distribute the "
+            f"work with the command line: mpirun -np N pneumachaos {command} ...")
 
 
 def _progress(progress, command):

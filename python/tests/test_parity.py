@@ -134,6 +134,7 @@ def test_friction_and_fit_take_the_command_lines_options():
     args = (run.t, run.v, run.P1, run.P2, rig)
     f = pc.friction(*args, models=["classic"], window=7)
     assert f["fits"]["classic"]["Fc_N"]["value"] > 0
+    assert "[friction]" in f["scenario_toml"]  # what --scenario-out writes
     with pytest.raises(ValueError, match=r"^window: expected an odd number of samples >= 3, got 4"):
         pc.friction(*args, window=4)
     with pytest.raises(RuntimeError, match="did not converge"):
@@ -142,6 +143,8 @@ def test_friction_and_fit_take_the_command_lines_options():
         pc.fit(*args, free=["circuit.S2_mm2"], segment_s=0)
     r = pc.fit(*args, free=["circuit.S2_mm2"], segment_s=0.5, velocity_scale_mm_per_s=20.0)
     assert r["parameters"]["circuit.S2_mm2"]["value"] == pytest.approx(0.2, rel=0.05)
+    fitted = r["scenario"]  # what --scenario-out writes, as a Scenario
+    assert float(fitted.get("circuit.S2_mm2")) == r["parameters"]["circuit.S2_mm2"]["value"]
 
 
 # The instrumented build (scripts/test-python-sanitizers.sh) runs ~10x slower; a test that
