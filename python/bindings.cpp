@@ -90,9 +90,9 @@ identify::MeasuredRecord record_from(const py::array& t, const py::array& v, con
 // Returns the JSON and the preferred model as the scenario [friction] table of --scenario-out
 // ("" when no model converged with Fc <= Fs).
 py::tuple friction_py(const py::array& t, const py::array& v, const py::array& p1,
-                        const py::array& p2, const Scenario& scenario,
-                        const std::vector<std::string>& models, bool pressure_dependent,
-                        long long window, int max_iterations) {
+                      const py::array& p2, const Scenario& scenario,
+                      const std::vector<std::string>& models, bool pressure_dependent,
+                      long long window, int max_iterations) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   identify::FrictionFitOptions fit =
       identify::fit_options_for(scenario, models, pressure_dependent, "models");
@@ -115,8 +115,8 @@ py::tuple friction_py(const py::array& t, const py::array& v, const py::array& p
 // `pneumachaos fit` on arrays: the free keys identified, as its JSON, and the fitted scenario
 // (what --scenario-out writes).
 py::tuple fit_py(const py::array& t, const py::array& v, const py::array& p1, const py::array& p2,
-                   const Scenario& start, std::vector<std::string> free,
-                   const identify::FitOptions& options) {
+                 const Scenario& start, std::vector<std::string> free,
+                 const identify::FitOptions& options) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   if (free.empty()) free = identify::default_free_keys(start);
   identify::check_free_keys(start, free);

@@ -41,7 +41,8 @@ Action add_stability(CLI::App& app) {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "stability: note: {}\n", n);
     StabilityOptions options;
-    if (args->position_mm) set_piston_position(options, scenario, *args->position_mm, "--position-mm");
+    if (args->position_mm)
+      set_piston_position(options, scenario, *args->position_mm, "--position-mm");
     if (!args->map) {
       if (!args->grids.empty()) throw Error("--grid", "needs --map");
       const Plant plant(scenario);
