@@ -6,8 +6,11 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,14 +23,22 @@
 #include "pneumachaos/identify/friction_fits.hpp"
 #include "pneumachaos/identify/friction_output.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/report/reproduce.hpp"
+#include "pneumachaos/simulate/event_integrator.hpp"
 #include "pneumachaos/simulate/lyapunov_output.hpp"
+#include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
 #include "pneumachaos/stability/stability_output.hpp"
+#include "pneumachaos/sweep/sweep.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
+// The command line's translation of a library field's id into the name the user typed; here
+// the names are the Python arguments.
+#include "flag_names.hpp"
 
 namespace py = pybind11;
 using namespace pneumachaos;
@@ -76,69 +87,139 @@ identify::MeasuredRecord record_from(const py::array& t, const py::array& v, con
 
 // `pneumachaos friction` on arrays: the same estimate, fits and JSON.
 // window: the Savitzky-Golay window in samples, 0 = chosen from the noise (the CLI's default).
-std::string friction_py(const py::array& t, const py::array& v, const py::array& p1,
-                        const py::array& p2, const Scenario& scenario,
-                        const std::vector<std::string>& models, bool pressure_dependent,
-                        long long window, int max_iterations) {
+// Returns the JSON and the preferred model as the scenario [friction] table of --scenario-out
+// ("" when no model converged with Fc <= Fs).
+py::tuple friction_py(const py::array& t, const py::array& v, const py::array& p1,
+                      const py::array& p2, const Scenario& scenario,
+                      const std::vector<std::string>& models, bool pressure_dependent,
+                      long long window, int max_iterations) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   identify::FrictionFitOptions fit =
       identify::fit_options_for(scenario, models, pressure_dependent, "models");
   fit.max_iterations = max_iterations;
   identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
   if (window != 0) identify::set_smoothing_window(settings, window, "window");
-  py::gil_scoped_release release;
-  const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
-  const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
-  identify::require_converged(fits);
-  return identify::friction_json(estimate, fits, settings, record.source);
+  std::string json, table;
+  {
+    py::gil_scoped_release release;
+    const identify::FrictionEstimate estimate = identify::estimate_friction(record, settings);
+    const identify::FrictionFits fits = identify::fit_friction(estimate, fit);
+    identify::require_converged(fits);
+    json = identify::friction_json(estimate, fits, settings, record.source);
+    if (const identify::ModelFit* preferred = fits.preferred())
+      table = identify::friction_scenario_toml(*preferred, record.source);
+  }
+  return py::make_tuple(json, table);
 }
 
-// `pneumachaos fit` on arrays: the free keys identified, as its JSON.
-std::string fit_py(const py::array& t, const py::array& v, const py::array& p1, const py::array& p2,
-                   const Scenario& start, std::vector<std::string> free,
-                   const identify::FitOptions& options) {
+// `pneumachaos fit` on arrays: the free keys identified, as its JSON, and the fitted scenario
+// (what --scenario-out writes).
+py::tuple fit_py(const py::array& t, const py::array& v, const py::array& p1, const py::array& p2,
+                 const Scenario& start, std::vector<std::string> free,
+                 const identify::FitOptions& options) {
   const identify::MeasuredRecord record = record_from(t, v, p1, p2);
   if (free.empty()) free = identify::default_free_keys(start);
   identify::check_free_keys(start, free);
-  py::gil_scoped_release release;
-  const identify::FitResult result = identify::fit_model(record, start, free, options);
-  return identify::fit_json(result, options, record);
+  identify::FitResult result;
+  {
+    py::gil_scoped_release release;
+    result = identify::fit_model(record, start, free, options);
+  }
+  return py::make_tuple(identify::fit_json(result, options, record), result.scenario);
+}
+
+// A Python progress callable as the runners call it: from a worker thread without the GIL,
+// so it takes the GIL; an exception there must not cross into the runner. None: no callback.
+std::function<void(std::size_t, std::size_t)> progress_callback(const py::object& progress,
+                                                                const char* what) {
+  if (progress.is_none()) return {};
+  return [&progress, what](std::size_t done, std::size_t total) {
+    py::gil_scoped_acquire hold;
+    try {
+      progress(done, total);
+    } catch (py::error_already_set& e) {
+      e.discard_as_unraisable(what);
+    }
+  };
 }
 
 void check_rate(double rate_Hz) {
   if (!(std::isfinite(rate_Hz) && rate_Hz > 0.0)) throw Error("rate_Hz", "must be a positive number");
 }
 
-py::dict simulate_py(const Scenario& scenario) {
+// A record's channels into `out` as simulate() returns them: t and each channel as numpy
+// arrays, their units, the rate.
+void add_channels(py::dict& out, TimeSeries&& series) {
+  std::vector<double> t(series.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = series.time_s(k);
+  py::dict channels, units;
+  channels["t"] = to_numpy(std::move(t));
+  units["t"] = "s";
+  out["rate_Hz"] = series.rate_Hz();
+  for (Channel& c : std::move(series).take_channels()) {
+    units[py::str(c.name)] = c.unit;
+    channels[py::str(c.name)] = to_numpy(std::move(c.values));
+  }
+  out["channels"] = channels;
+  out["units"] = units;
+}
+
+// A run as simulate() returns it: how it ended and, when it succeeded, its channels.
+py::dict simulation_dict(SimulationResult&& r, const Plant& plant) {
+  py::dict out;
+  out["ok"] = r.summary.ok();
+  out["summary"] = describe(r.summary, !plant.seal_friction().has_stiction());
+  out["termination"] = std::string(termination_name(r.summary.termination));
+  if (r.summary.ok()) add_channels(out, std::move(r.series));
+  return out;
+}
+
+// seed: of the transducers' noise, as `simulate --seed`.
+py::dict simulate_py(const Scenario& scenario, std::uint64_t seed) {
   const Plant plant(scenario);
   SimulationResult r;
   {
     py::gil_scoped_release release;
     r = simulate(plant, scenario.run);
   }
-  py::dict out;
-  out["ok"] = r.summary.ok();
-  out["summary"] = describe(r.summary, !plant.seal_friction().has_stiction());
-  out["termination"] = std::string(termination_name(r.summary.termination));
-  if (!r.summary.ok()) return out;
-  std::vector<double> t(r.series.size());
-  for (std::size_t k = 0; k < t.size(); ++k) t[k] = r.series.time_s(k);
-  py::dict channels, units;
-  channels["t"] = to_numpy(std::move(t));
-  units["t"] = "s";
-  out["rate_Hz"] = r.series.rate_Hz();
-  for (Channel& c : std::move(r.series).take_channels()) {
-    units[py::str(c.name)] = c.unit;
-    channels[py::str(c.name)] = to_numpy(std::move(c.values));
+  if (r.summary.ok()) add_scenario_measured_channels(r.series, scenario, seed);
+  return simulation_dict(std::move(r), plant);
+}
+
+// `sweep --replay POINT:REPEAT`: the run's runs.csv fields (name -> text, as the file holds
+// them) and its record as simulate() returns one (with the measured channels the analysis saw).
+py::dict sweep_replay_py(const SweepSpec& spec, std::size_t point, std::size_t repeat) {
+  std::pair<SweepRun, RunRecord> replayed;
+  {
+    py::gil_scoped_release release;
+    replayed = replay_run(spec, point, repeat, "replay");
   }
-  out["channels"] = channels;
-  out["units"] = units;
+  auto& [run, record] = replayed;
+  py::dict fields;
+  for (const auto& [name, value] : record.named_fields()) fields[py::str(name)] = value;
+  py::dict out;
+  out["run"] = fields;
+  out["record"] = simulation_dict(std::move(run.sim), Plant(run.scenario));
   return out;
 }
 
-py::tuple analyze_py(const py::array& x_in, double rate_Hz, const AnalysisOptions& options) {
-  std::vector<double> x = series_from(x_in);
+// The samples of x between from_s and to_s [s] (times from the first sample, 0 s), as
+// analyze --from/--to cut a record; none given: x whole.
+std::vector<double> windowed(std::vector<double> x, double rate_Hz, std::optional<double> from_s,
+                             std::optional<double> to_s) {
+  if (!from_s && !to_s) return x;
+  TimeSeries series(rate_Hz);
+  series.add_channel("x", "", std::move(x));
+  const TimeSeries cut = cli::with_flag_names(
+      cli::FlagNames{{kWindowFromField.id, "from_s"}, {kWindowToField.id, "to_s"}},
+      [&] { return time_window(series, from_s, to_s); });
+  return cut.channel("x").values;
+}
+
+py::tuple analyze_py(const py::array& x_in, double rate_Hz, const AnalysisOptions& options,
+                     std::optional<double> from_s, std::optional<double> to_s) {
   check_rate(rate_Hz);
+  const std::vector<double> x = windowed(series_from(x_in), rate_Hz, from_s, to_s);
   AnalysisResult r;
   {
     py::gil_scoped_release release;
@@ -154,24 +235,33 @@ py::tuple analyze_py(const py::array& x_in, double rate_Hz, const AnalysisOption
   return py::make_tuple(analysis_json(r, "<array>", "x", ""), curves);
 }
 
-std::string stability_map_csv(const Scenario& scenario, const std::vector<std::string>& grid) {
+StabilityOptions stability_options(const Scenario& scenario, std::optional<double> position_mm) {
+  StabilityOptions options;
+  if (position_mm) set_piston_position(options, scenario, *position_mm, "position_mm");
+  return options;
+}
+
+std::string stability_map_csv(const Scenario& scenario, const std::vector<std::string>& grid,
+                              std::optional<double> position_mm) {
+  const StabilityOptions options = stability_options(scenario, position_mm);
   std::vector<GridAxis> axes;
   for (const auto& g : grid) axes.push_back(parse_grid_axis(g));
   if (axes.empty()) axes = paper_valve_grid();
   std::ostringstream csv;
   {
     py::gil_scoped_release release;
-    const StabilityMap map = stability_map(scenario, axes, {});
+    const StabilityMap map = stability_map(scenario, axes, options);
     write_stability_map_csv(csv, map, scenario.ambient_pressure_Pa);
   }
   return csv.str();
 }
 
-py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid,
-                  std::size_t repeats, std::uint64_t seed, const std::string& out,
-                  std::size_t threads, bool resume, const py::object& progress, bool wolf,
-                  std::size_t surrogates, const ModelExponentSpec& model_exponent,
-                  bool adaptive, std::size_t adaptive_step) {
+// What a sweep runs, from sweep()'s arguments: the same spec for the whole sweep and for
+// one run of it replayed.
+SweepSpec sweep_spec_py(const Scenario& scenario, const std::vector<std::string>& grid,
+                        std::size_t repeats, std::uint64_t seed, bool wolf, std::size_t surrogates,
+                        const ModelExponentSpec& model_exponent, bool adaptive,
+                        bool adaptive_motion, std::size_t adaptive_step) {
   SweepSpec spec;
   spec.base = scenario;
   for (const auto& g : grid) spec.axes.push_back(parse_grid_axis(g));
@@ -182,24 +272,19 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   spec.surrogates = surrogates;
   spec.model_exponent = model_exponent;
   spec.adaptive.enabled = adaptive;
+  spec.adaptive.follow_motion = adaptive_motion;
   spec.adaptive.coarse_step = adaptive_step;
+  return spec;
+}
+
+py::dict sweep_py(const SweepSpec& spec, const std::string& out, std::size_t threads, bool resume,
+                  const py::object& progress) {
   SweepOptions o;
   o.out_dir = out;
   o.threads = threads;
   o.resume = resume;
   o.progress = false;
-  if (!progress.is_none()) {
-    // Called from a worker thread without the GIL: take it for the Python callable; an
-    // exception there must not cross into the runner.
-    o.on_progress = [&progress](std::size_t done, std::size_t total) {
-      py::gil_scoped_acquire hold;
-      try {
-        progress(done, total);
-      } catch (py::error_already_set& e) {
-        e.discard_as_unraisable("pneumachaos.sweep progress callback");
-      }
-    };
-  }
+  o.on_progress = progress_callback(progress, "pneumachaos.sweep progress callback");
   SweepSummary s;
   {
     py::gil_scoped_release release;
@@ -212,12 +297,57 @@ py::dict sweep_py(const Scenario& scenario, const std::vector<std::string>& grid
   d["stick_slip_points"] = s.stick_slip_points;
   d["chaos_full_points"] = s.chaos_full_points;
   d["chaos_any_points"] = s.chaos_any_points;
-  if (adaptive) d["inferred_points"] = s.inferred_points;
-  if (model_exponent.enabled) {
+  if (spec.adaptive.enabled) d["inferred_points"] = s.inferred_points;
+  if (spec.model_exponent.enabled) {
     d["model_chaos_full_points"] = s.model_chaos_full_points;
     d["model_chaos_any_points"] = s.model_chaos_any_points;
   }
   return d;
+}
+
+// `pneumachaos lyapunov --json`; an error about an option names its Python argument.
+std::string model_lyapunov_py(const Scenario& s, const ModelLyapunovOptions& o,
+                              double tolerance_factor) {
+  if (!(std::isfinite(tolerance_factor) && tolerance_factor > 0.0))
+    throw Error("tolerance_factor", "must be a positive number");
+  const cli::FlagNames names{{ModelLyapunovOptions::kMeasureField.id, "measure_s"},
+                             {ModelLyapunovOptions::kRenormalizeField.id, "renormalize_s"},
+                             {ModelLyapunovOptions::kTransientField.id, "transient_s"},
+                             {ModelLyapunovOptions::kSeparationField.id, "separation"},
+                             {IntegratorOptions::kRelativeToleranceField.id, "tolerance_factor"},
+                             {IntegratorOptions::kAbsoluteToleranceField.id, "tolerance_factor"}};
+  const ModelLyapunovResult r = cli::with_flag_names(names, [&] {
+    py::gil_scoped_release release;
+    return plant_lyapunov(Plant(s), s.run, o, tolerance_factor);
+  });
+  if (!r.ok) throw RunError("model_lyapunov", r.message);
+  return lyapunov_json(r, o);
+}
+
+// `pneumachaos reproduce`: the same report, resumed when run again into the same directory;
+// returns claims.json's text and the report's path. rig: none for the built-in virtual rig.
+py::tuple reproduce_py(const std::optional<Scenario>& rig, const std::string& out, bool quick,
+                       bool full_maps, std::size_t threads, const py::object& progress) {
+  ReproduceOptions o;
+  o.out_dir = out;
+  o.quick = quick;
+  o.full_maps = full_maps;
+  o.threads = threads;
+  o.progress = false;
+  o.on_progress = progress_callback(progress, "pneumachaos.reproduce progress callback");
+  if (rig) {
+    o.rig = *rig;
+    o.rig_source = "a scenario given to pneumachaos.reproduce";
+  }
+  ReproduceResult r;
+  {
+    py::gil_scoped_release release;
+    r = reproduce(o);
+  }
+  std::ifstream in(out + "/claims.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  return py::make_tuple(text.str(), r.index_html);
 }
 
 void bind_scenario(py::module_& m) {
@@ -296,32 +426,32 @@ PYBIND11_MODULE(_core, m) {
           [](AnalysisOptions& o, std::size_t n) { o.surrogates.count = n; });
   m.def("simulate", &simulate_py);
   m.def("analyze", &analyze_py);
-  m.def("stability_json", [](const Scenario& s) {
+  m.def("stability_json", [](const Scenario& s, std::optional<double> position_mm) {
+    const StabilityOptions options = stability_options(s, position_mm);
     py::gil_scoped_release release;
-    return stability_json(s, analyze_stability(Plant(s), {}));
+    return stability_json(s, analyze_stability(Plant(s), options));
   });
   m.def("stability_map_csv", &stability_map_csv);
-  m.def("model_lyapunov_json", [](const Scenario& s, double transient_s, double measure_s,
-                                  double renormalize_s) {
-    ModelLyapunovOptions o;
-    o.transient_s = transient_s;
-    o.measure_s = measure_s;
-    o.renormalize_s = renormalize_s;
-    ModelLyapunovResult r;
-    {
-      py::gil_scoped_release release;
-      r = plant_lyapunov(Plant(s), s.run, o);
-    }
-    if (!r.ok) throw RunError("model_lyapunov", r.message);
-    return lyapunov_json(r, o);
-  });
+  // The model exponent's options in the command line's units and defaults.
+  py::class_<ModelLyapunovOptions>(m, "ModelLyapunovOptions")
+      .def(py::init<>())
+      .def_readwrite("transient_s", &ModelLyapunovOptions::transient_s)
+      .def_readwrite("measure_s", &ModelLyapunovOptions::measure_s)
+      .def_readwrite("renormalize_s", &ModelLyapunovOptions::renormalize_s)
+      .def_readwrite("separation", &ModelLyapunovOptions::separation)
+      .def_readwrite("until_stroke_end", &ModelLyapunovOptions::until_terminal_event);
+  m.def("model_lyapunov_json", &model_lyapunov_py);
+  m.def("reproduce", &reproduce_py);
   py::class_<ModelExponentSpec>(m, "ModelExponentSpec")
       .def(py::init<>())
       .def_readwrite("enabled", &ModelExponentSpec::enabled)
       .def_readwrite("transient_s", &ModelExponentSpec::transient_s)
       .def_readwrite("measure_s", &ModelExponentSpec::measure_s)
       .def_readwrite("renormalize_s", &ModelExponentSpec::renormalize_s);
+  py::class_<SweepSpec>(m, "SweepSpec");
+  m.def("sweep_spec", &sweep_spec_py);
   m.def("sweep", &sweep_py);
+  m.def("sweep_replay", &sweep_replay_py);
   m.def("friction_json", &friction_py);
   m.def("fit_json", &fit_py);
   // calibrate (docs/guide/calibrate.md): runs or resumes SPEC into out_dir and returns its

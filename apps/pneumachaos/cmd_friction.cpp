@@ -53,9 +53,7 @@ int run_friction(const FrictionArgs& a) {
   fmt::print("{}", identify::friction_summary(estimate, fits));
   for (const auto& w : fits.warnings) fmt::print(stderr, "friction: warning: {}\n", w);
   identify::require_converged(fits);  // none converged: its reason, exit 3, nothing written
-  const identify::ModelFit* preferred = nullptr;
-  for (const auto& f : fits.fits)
-    if (f.name == fits.preferred_model) preferred = &f;
+  const identify::ModelFit* preferred = fits.preferred();
   if (!a.scenario_out.empty() && !preferred)
     throw RunError("--scenario-out",
                    "no model converged with Fc <= Fs (see above); no output written");

@@ -72,10 +72,7 @@ Action add_simulate(CLI::App& app) {
       fmt::print(stderr, "simulate: the run failed; no output written\n");
       return kExitRunFailed;
     }
-    if (!scenario.transducer.ideal()) {
-      add_measured_channels(result.series, scenario.transducer, scenario.ambient_pressure_Pa,
-                            args->seed);
-    }
+    add_scenario_measured_channels(result.series, scenario, args->seed);
     return write_series_csv(result.series, args->output);
   };
 }

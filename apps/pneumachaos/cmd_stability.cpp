@@ -41,15 +41,8 @@ Action add_stability(CLI::App& app) {
     const Scenario scenario = build_scenario(args->scenario.file, args->scenario.sets);
     for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "stability: note: {}\n", n);
     StabilityOptions options;
-    if (args->position_mm) {
-      const double stroke_mm = scenario.cylinder.stroke_m * 1e3;
-      if (!(*args->position_mm >= 0.0 && *args->position_mm <= stroke_mm)) {
-        throw Error("--position-mm",
-                    fmt::format("{} mm is not a piston position: expected 0 to the stroke, {} mm",
-                                *args->position_mm, stroke_mm));
-      }
-      options.equilibrium.position_m = *args->position_mm * 1e-3;
-    }
+    if (args->position_mm)
+      set_piston_position(options, scenario, *args->position_mm, "--position-mm");
     if (!args->map) {
       if (!args->grids.empty()) throw Error("--grid", "needs --map");
       const Plant plant(scenario);

@@ -34,12 +34,7 @@ int replay(const SweepSpec& spec, const std::string& which, const std::string& p
   if (colon == std::string::npos) replay_index(which, 0, 0);  // throws the usage message
   const std::size_t point = replay_index(which, 0, colon);
   const std::size_t repeat = replay_index(which, colon + 1, which.size());
-  if (point >= spec.points() || repeat >= spec.repeats) {
-    throw Error("--replay", fmt::format("run {}:{} is outside the sweep ({} points x {} repeats)",
-                                        point, repeat, spec.points(), spec.repeats));
-  }
-  const SweepRun run = simulate_run(spec, point, repeat);
-  const RunRecord r = judge_run(spec, run);
+  const auto [run, r] = replay_run(spec, point, repeat, "--replay");
   fmt::print(stderr, "sweep: run {}:{} replayed; as runs.csv records it:\n", point, repeat);
   for (const auto& [name, value] : r.named_fields())
     fmt::print(stderr, "  {:<22} {}\n", name, value);

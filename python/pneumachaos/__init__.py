@@ -20,7 +20,7 @@ from . import _core
 
 __all__ = ["Scenario", "SimulationResult", "AnalysisResult", "simulate", "analyze",
            "stability", "stability_map", "model_lyapunov", "friction", "fit", "sweep",
-           "calibrate"]
+           "calibrate", "reproduce"]
 
 
 class Scenario:
@@ -161,15 +161,19 @@ def _scenario(scenario):
     return scenario
 
 
-def simulate(scenario=None, duration_s=None, rate_Hz=None):
+def simulate(scenario=None, duration_s=None, rate_Hz=None, seed=0):
     """Simulates the scenario; duration_s and rate_Hz override run.duration_s / run.rate_Hz.
-    Raises RuntimeError when the run fails (the summary says why)."""
+    With any transducer.* key set, the record also holds v_measured, P1_measured and
+    P2_measured as the transducers give them, their noise drawn from `seed` (default 0): the
+    same channels as `pneumachaos simulate --seed` writes. Raises RuntimeError when the run
+    fails (the summary says why)."""
+    seed = _seed("seed", seed)
     s = _scenario(scenario).copy()
     if duration_s is not None:
         s.set("run.duration_s", duration_s)
     if rate_Hz is not None:
         s.set("run.rate_Hz", rate_Hz)
-    result = SimulationResult(_core.simulate(s._core))
+    result = SimulationResult(_core.simulate(s._core, seed))
     if not result.ok:
         raise RuntimeError(f"simulate: {result.summary}")
     return result
@@ -191,7 +195,7 @@ def _names(value, argument):
 
 
 def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verdict_seeds=5,
-            velocity=True, embedding_spread=True, surrogates=39):
+            velocity=True, embedding_spread=True, surrogates=39, from_s=None, to_s=None):
     """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
     rate_Hz, with the numbers of `pneumachaos analyze` given the same record, seed and options.
     dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1 test's and the
@@ -200,7 +204,9 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
     means rest, and stick-slip is judged from its rests; False for any other signal (not
     judged). embedding_spread: the divergence exponent's uncertainty also covers its values at
     embedding dimensions m - 1 and m + 1. surrogates: IAAFT surrogates for the test against
-    linear noise (default 39 as on the command line; 0 = off, else 19 to 999)."""
+    linear noise (default 39 as on the command line; 0 = off, else 19 to 999). from_s, to_s:
+    analyse only the samples from/up to these times [s], the first sample at 0 s (as --from
+    and --to, e.g. from_s=2 to skip a start-up transient; default: the whole record)."""
     options = _core.AnalysisOptions()
     options.wolf = bool(wolf)
     options.velocity = bool(velocity)
@@ -209,29 +215,73 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
                         ("seed", seed), ("verdict_seeds", verdict_seeds),
                         ("surrogates", surrogates)):
         setattr(options, name, _whole(name, value, 0))
-    return AnalysisResult(*_core.analyze(_samples(x), float(rate_Hz), options))
+    return AnalysisResult(*_core.analyze(_samples(x), float(rate_Hz), options,
+                                         _number_or_none("from_s", from_s),
+                                         _number_or_none("to_s", to_s)))
 
 
-def stability(scenario=None):
+def stability(scenario=None, position_mm=None):
     """Equilibrium, the paper's a1/b1 and damping coefficient, the full model's eigenvalues
-    and both verdicts, as `pneumachaos stability --json` gives them."""
-    return _json.loads(_core.stability_json(_scenario(scenario)._core))
+    and both verdicts, as `pneumachaos stability --json` gives them. position_mm: the piston
+    position the chamber volumes are taken at, 0 to the stroke (--position-mm; default:
+    cylinder.frozen_position_mm when the scenario sets it, else mid-stroke)."""
+    return _json.loads(_core.stability_json(_scenario(scenario)._core,
+                                            _number_or_none("position_mm", position_mm)))
 
 
-def stability_map(scenario=None, grid=()):
+def stability_map(scenario=None, grid=(), position_mm=None):
     """The stability verdict over a grid ("KEY=FROM:TO:STEP" strings; default: the paper's
-    S1 x S2 grid) as a dict of numpy arrays, one per column of `stability --map`."""
-    text = _core.stability_map_csv(_scenario(scenario)._core, _names(grid, "grid"))
+    S1 x S2 grid) as a dict of numpy arrays, one per column of `stability --map`;
+    position_mm as in stability()."""
+    text = _core.stability_map_csv(_scenario(scenario)._core, _names(grid, "grid"),
+                                   _number_or_none("position_mm", position_mm))
     table = _np.genfromtxt(_io.StringIO(text), delimiter=",", names=True, dtype=None,
                           encoding="utf-8", deletechars="", autostrip=True)
     return {name: _np.atleast_1d(table[name]) for name in table.dtype.names}
 
 
-def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s=0.02):
+def model_lyapunov(scenario=None, transient_s=5.0, measure_s=40.0, renormalize_s=0.02,
+                   separation=1e-3, tolerance_factor=1.0, until_stroke_end=True):
     """The model's own largest Lyapunov exponent (two trajectories, renormalised), as
-    `pneumachaos lyapunov --json` gives it."""
-    return _json.loads(_core.model_lyapunov_json(_scenario(scenario)._core, float(transient_s),
-                                                float(measure_s), float(renormalize_s)))
+    `pneumachaos lyapunov --json` gives it with --transient, --measure, --renormalize,
+    --separation, --tolerance-factor and --[no-]until-stroke-end (same defaults). separation:
+    the initial separation in scaled units (1 = 10 kPa on P1), at least 1e6 x the relative
+    tolerance (1e-9 x tolerance_factor); until_stroke_end=False fails the run at a stroke end
+    during the measurement instead of ending it there. The running estimate (--running-out)
+    is result["lyapunov"]["running"]: its "t" and "lambda" values."""
+    options = _core.ModelLyapunovOptions()  # the command line's defaults
+    for name, value in (("transient_s", transient_s), ("measure_s", measure_s),
+                        ("renormalize_s", renormalize_s), ("separation", separation)):
+        setattr(options, name, _number(name, value))
+    options.until_stroke_end = _flag("until_stroke_end", until_stroke_end)
+    return _json.loads(_core.model_lyapunov_json(_scenario(scenario)._core, options,
+                                                _number("tolerance_factor", tolerance_factor)))
+
+
+def _number(name, value):
+    """A real number (its range is the library's to check, naming the argument)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, _np.integer, _np.floating)):
+        raise ValueError(f"{name}: expected a number, got {value!r}")
+    return float(value)
+
+
+def _number_or_none(name, value):
+    return None if value is None else _number(name, value)
+
+
+def _flag(name, value):
+    """True or False; anything else (a string "false" would read as True) is refused."""
+    if not isinstance(value, (bool, _np.bool_)):
+        raise ValueError(f"{name}: expected True or False, got {value!r}")
+    return bool(value)
+
+
+def _seed(name, value):
+    """A seed as the command line takes it: a whole number from 0 to 2**64 - 1."""
+    value = _whole(name, value, 0)
+    if value >= 2 ** 64:
+        raise ValueError(f"{name}: expected a whole number below 2**64, got {value!r}")
+    return value
 
 
 def _whole(name, value, least):
@@ -256,12 +306,17 @@ def friction(t, v, P1, P2, scenario=None, models=(), pressure_dependent=False, w
     moving mass from the scenario; models from "classic", "stribeck", "stribeck_delta", "lugre"
     (default all). window: the Savitzky-Golay window in samples (odd, >= 3; default: chosen from
     the noise); max_iterations: allowed to each fit (default 200), as --window and
-    --max-iterations. Raises ValueError for bad input, RuntimeError when no fit converges."""
+    --max-iterations. result["scenario_toml"] is what --scenario-out writes: the preferred
+    model as a scenario [friction] table (None when no model converged with Fc <= Fs).
+    Raises ValueError for bad input, RuntimeError when no fit converges."""
     window = 0 if window is None else _whole("window", window, 1)
-    return _json.loads(_core.friction_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
-                                           _scenario(scenario)._core, _names(models, "models"),
-                                           bool(pressure_dependent), window,
-                                           _whole("max_iterations", max_iterations, 1)))
+    text, table = _core.friction_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
+                                      _scenario(scenario)._core, _names(models, "models"),
+                                      bool(pressure_dependent), window,
+                                      _whole("max_iterations", max_iterations, 1))
+    result = _json.loads(text)
+    result["scenario_toml"] = table or None
+    return result
 
 
 def fit(t, v, P1, P2, scenario=None, free=(), segment_s=0.2, pressure_scale_Pa=1000.0,
@@ -269,17 +324,22 @@ def fit(t, v, P1, P2, scenario=None, free=(), segment_s=0.2, pressure_scale_Pa=1
     """Identifies the scenario keys named in `free` (default: S1, S2, the seal's Fc and Fs)
     from a measured record by segment-wise simulation, as `pneumachaos fit --json` gives it,
     with its --segment, --pressure-scale, --velocity-scale and --max-iterations (same
-    defaults). Raises ValueError for bad input, RuntimeError when the fit does not converge."""
+    defaults). result["scenario"] is the fitted Scenario (what --scenario-out writes as TOML:
+    result["scenario"].to_toml()). Raises ValueError for bad input, RuntimeError when the fit
+    does not converge."""
     options = _core.FitOptions()
     options.segment_s = _positive("segment_s", segment_s)
     options.pressure_scale_Pa = _positive("pressure_scale_Pa", pressure_scale_Pa)
     options.velocity_scale_mm_per_s = _positive("velocity_scale_mm_per_s", velocity_scale_mm_per_s)
     options.max_iterations = _whole("max_iterations", max_iterations, 1)
-    return _json.loads(_core.fit_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
-                                      _scenario(scenario)._core, _names(free, "free"), options))
+    text, fitted = _core.fit_json(_samples(t), _samples(v), _samples(P1), _samples(P2),
+                                  _scenario(scenario)._core, _names(free, "free"), options)
+    result = _json.loads(text)
+    result["scenario"] = Scenario(fitted)
+    return result
 
 
-def _print_progress():
+def _print_progress(command="sweep"):
     state = {"last": 0.0}
 
     def show(done, total):
@@ -287,7 +347,7 @@ def _print_progress():
         if done == total or now - state["last"] >= 1.0:
             state["last"] = now
             end = "\n" if done == total else ""
-            print(f"\rsweep: {done}/{total} runs", end=end, file=_sys.stderr, flush=True)
+            print(f"\r{command}: {done}/{total} runs", end=end, file=_sys.stderr, flush=True)
     return show
 
 
@@ -296,23 +356,36 @@ def _print_progress():
 _MPI_LAUNCHER_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK")
 
 
-def _refuse_under_mpi():
+def _refuse_under_mpi(command="sweep"):
     """A sweep in this module runs on threads of one process. Under mpirun every rank would
     run the whole sweep into the same directory (two writers), and the MPI module that shares
     runs between ranks belongs to the command line, not to the Python package, so the call is
-    refused before anything is written."""
+    refused before anything is written. reproduce runs its maps as sweeps: the same holds."""
     launcher = next((v for v in _MPI_LAUNCHER_VARIABLES if v in _os.environ), None)
     if launcher is not None:
         raise RuntimeError(
-            f"sweep: started under an MPI launcher ({launcher} is set): the Python module "
-            "runs a sweep on the threads of one process and cannot share it between MPI "
+            f"{command}: started under an MPI launcher ({launcher} is set): the Python module "
+            "runs sweeps on the threads of one process and cannot share them between MPI "
             "ranks. Run Python without mpirun (threads=N uses N cores), or distribute the "
-            "sweep with the command line: mpirun -np N pneumachaos sweep ...")
+            f"work with the command line: mpirun -np N pneumachaos {command} ...")
+
+
+def _progress(progress, command):
+    """True: a printed "command: done/total runs" line; False: nothing; or the callable."""
+    if progress is True:
+        return _print_progress(command)
+    if progress is False:
+        return None
+    if not callable(progress):
+        raise ValueError(f"{command}: progress: expected True, False or a callable, got "
+                         f"{progress!r}")
+    return progress
 
 
 def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
           progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=None,
-          model_measure_s=None, model_renormalize_s=None, adaptive=False, adaptive_step=4):
+          model_measure_s=None, model_renormalize_s=None, adaptive=False, adaptive_motion=False,
+          adaptive_step=4, replay=None):
     """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
     summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv.
     progress: True prints "sweep: done/total runs" at most once a second, False prints
@@ -323,31 +396,55 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     model settings need model_exponent=True (defaults 1 s, 0 = the rest of the run, 0.02 s).
     adaptive=True (a grid of two axes) is the CLI's --adaptive with --adaptive-step: a coarse
     lattice, then only the cells whose points differ; the summary gains inferred_points and
-    points.csv's `inferred` column marks the points filled from their cell, not run."""
+    points.csv's `inferred` column marks the points filled from their cell, not run;
+    adaptive_motion=True (--adaptive-motion) also refines where the motion changes between
+    settling and oscillating (about twice the runs).
+    replay=(POINT, REPEAT) is --replay: that one run of this sweep again, bit for bit, nothing
+    written (out not needed); returns {"run": its runs.csv fields as text by column, "record":
+    the SimulationResult the analysis judged, with v_measured, P1_measured, P2_measured}."""
+    spec = _sweep_spec(scenario, grid, repeats, seed, wolf, surrogates, model_exponent,
+                       (model_transient_s, model_measure_s, model_renormalize_s), adaptive,
+                       adaptive_motion, adaptive_step)
+    if replay is not None:
+        return _replay(spec, replay)
     if not out:
         raise ValueError("sweep: out: a directory for the results is required")
     _refuse_under_mpi()
-    for name, value in (("repeats", repeats), ("seed", seed), ("threads", threads),
-                        ("surrogates", surrogates), ("adaptive_step", adaptive_step)):
+    _whole("sweep: threads", threads, 0)
+    progress = _progress(progress, "sweep")
+    return _core.sweep(spec, str(out), int(threads), bool(resume), progress)
+
+
+def _sweep_spec(scenario, grid, repeats, seed, wolf, surrogates, model_exponent, model_times,
+                adaptive, adaptive_motion, adaptive_step):
+    """What sweep() runs, checked naming each argument."""
+    for name, value in (("repeats", repeats), ("seed", seed), ("surrogates", surrogates),
+                        ("adaptive_step", adaptive_step)):
         _whole(f"sweep: {name}", value, 0)
-    if progress is True:
-        progress = _print_progress()
-    elif progress is False:
-        progress = None
-    elif not callable(progress):
-        raise ValueError(f"sweep: progress: expected True, False or a callable, got {progress!r}")
     model = _core.ModelExponentSpec()  # the command line's defaults
     model.enabled = bool(model_exponent)
-    for name, value in (("transient_s", model_transient_s), ("measure_s", model_measure_s),
-                        ("renormalize_s", model_renormalize_s)):
+    for name, value in zip(("transient_s", "measure_s", "renormalize_s"), model_times):
         if value is None:
             continue
         if not model.enabled:
             raise ValueError(f"sweep: model_{name}: needs model_exponent=True")
         setattr(model, name, float(value))
-    return _core.sweep(_scenario(scenario)._core, _names(grid, "grid"), int(repeats), int(seed), str(out),
-                       int(threads), bool(resume), progress, bool(wolf), int(surrogates), model,
-                       bool(adaptive), int(adaptive_step))
+    if _flag("sweep: adaptive_motion", adaptive_motion) and not adaptive:
+        raise ValueError("sweep: adaptive_motion: needs adaptive=True")
+    return _core.sweep_spec(_scenario(scenario)._core, _names(grid, "grid"), int(repeats),
+                            int(seed), bool(wolf), int(surrogates), model, bool(adaptive),
+                            bool(adaptive_motion), int(adaptive_step))
+
+
+def _replay(spec, replay):
+    """sweep(replay=(POINT, REPEAT)): the run again, as `sweep --replay POINT:REPEAT`."""
+    if isinstance(replay, (str, bytes)) or not hasattr(replay, "__len__") or len(replay) != 2 \
+            or any(isinstance(i, bool) or not isinstance(i, (int, _np.integer)) or i < 0
+                   for i in replay):
+        raise ValueError(f"sweep: replay: expected (POINT, REPEAT), two whole numbers >= 0, "
+                         f"got {replay!r}")
+    raw = _core.sweep_replay(spec, int(replay[0]), int(replay[1]))
+    return {"run": dict(raw["run"]), "record": SimulationResult(raw["record"])}
 
 
 def calibrate(spec, out_dir, threads=0, resume=False):
@@ -358,3 +455,22 @@ def calibrate(spec, out_dir, threads=0, resume=False):
     if not out_dir:
         raise ValueError("calibrate: out_dir: a directory for the results is required")
     return _json.loads(_core.calibrate_json(str(spec), str(out_dir), int(threads), bool(resume)))
+
+
+def reproduce(scenario=None, out="report", quick=False, full_maps=False, threads=0,
+              progress=True):
+    """The paper's figures and claims as an HTML report in directory `out`, as `pneumachaos
+    reproduce --out OUT [--quick] [--full-maps] [--threads N]` makes it (the same code and
+    numbers); scenario: the rig (default: the built-in virtual rig). Run again into the same
+    directory it resumes its sweeps. progress as in sweep(): True prints "reproduce:
+    done/total runs" (total: at most, with adaptive maps), a callable gets (done, total).
+    Returns {"claims": claims.json as a dict, "report": the path of index.html}."""
+    if not isinstance(out, (str, _os.PathLike)) or not str(out):
+        raise ValueError(f"reproduce: out: expected a directory for the report, got {out!r}")
+    options = (_flag("reproduce: quick", quick), _flag("reproduce: full_maps", full_maps),
+               _whole("reproduce: threads", threads, 0))
+    progress = _progress(progress, "reproduce")
+    rig = None if scenario is None else _scenario(scenario)._core
+    _refuse_under_mpi("reproduce")
+    claims, report = _core.reproduce(rig, str(out), *options, progress)
+    return {"claims": _json.loads(claims), "report": report}

@@ -584,6 +584,12 @@ const ModelFit* FrictionFits::failed() const {
   return nullptr;
 }
 
+const ModelFit* FrictionFits::preferred() const {
+  for (const auto& f : fits)
+    if (f.name == preferred_model) return &f;
+  return nullptr;
+}
+
 bool FrictionFits::any_converged() const {
   return std::any_of(fits.begin(), fits.end(),
                      [](const ModelFit& f) { return f.fitted && f.converged; });

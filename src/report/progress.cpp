@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace pneumachaos {
 
-ReproduceProgress::ReproduceProgress(bool show, int stages, std::size_t total_runs)
-    : stages_(stages), total_runs_(total_runs) {
+ReproduceProgress::ReproduceProgress(bool show, int stages, std::size_t total_runs,
+                                     Callback on_runs)
+    : stages_(stages), total_runs_(total_runs), on_runs_(std::move(on_runs)) {
   terminal_ = show && ::isatty(STDERR_FILENO) != 0;
   plain_ = show && !terminal_;
   if (plain_) ticker_ = std::thread([this] { tick(); });
@@ -31,21 +33,40 @@ void ReproduceProgress::stage(const std::string& what) {
 }
 
 void ReproduceProgress::runs_done(std::size_t runs) {
-  std::lock_guard<std::mutex> lock(m_);
-  runs_ += runs;
-  current_ = 0;
+  std::size_t done = 0;
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    runs_ += runs;
+    current_ = 0;
+    done = done_locked();
+  }
+  report(done);
 }
 
 void ReproduceProgress::sweep_runs(std::size_t done_in_sweep) {
-  std::lock_guard<std::mutex> lock(m_);
-  current_ = done_in_sweep;
+  std::size_t done = 0;
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    current_ = done_in_sweep;
+    done = done_locked();
+  }
+  report(done);
+}
+
+std::size_t ReproduceProgress::done_locked() const {
+  return std::min(total_runs_, runs_ + current_);
+}
+
+// Outside the lock: the callback may take its time (the Python module takes the GIL).
+void ReproduceProgress::report(std::size_t done) const {
+  if (on_runs_) on_runs_(done, total_runs_);
 }
 
 std::string ReproduceProgress::line_locked() const {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   // The sweeps dominate the time: extrapolate from the runs finished so far.
-  const std::size_t done = std::min(total_runs_, runs_ + current_);
+  const std::size_t done = done_locked();
   // Adaptive maps run only part of their grid: the total and the time left are upper bounds.
   const std::string eta =
       done == 0 ? "time left unknown"

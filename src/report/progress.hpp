@@ -6,6 +6,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -14,8 +15,10 @@ namespace pneumachaos {
 
 class ReproduceProgress {
  public:
+  /// Called with the runs done and total_runs whenever the count moves.
+  using Callback = std::function<void(std::size_t done, std::size_t total)>;
   /// total_runs: the sweep runs of the whole report (the bulk of its time).
-  ReproduceProgress(bool show, int stages, std::size_t total_runs);
+  ReproduceProgress(bool show, int stages, std::size_t total_runs, Callback on_runs = {});
   ~ReproduceProgress();
   ReproduceProgress(const ReproduceProgress&) = delete;
   ReproduceProgress& operator=(const ReproduceProgress&) = delete;
@@ -28,11 +31,14 @@ class ReproduceProgress {
  private:
   void tick();
   [[nodiscard]] std::string line_locked() const;
+  [[nodiscard]] std::size_t done_locked() const;
+  void report(std::size_t done) const;
 
   bool terminal_ = false, plain_ = false;
   int stages_, done_ = 0;
   std::size_t total_runs_, runs_ = 0, current_ = 0;
   std::string what_;
+  Callback on_runs_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::mutex m_;
   std::condition_variable cv_;

@@ -187,7 +187,7 @@ class ReportBuilder {
         fig_dir_(o.out_dir + "/figures"),
         base_(paper_conditions(o.rig ? *o.rig : default_scenario())),
         spec_(map_spec(base_, o.quick, o.full_maps)),
-        stage_(o.progress, 9, 4 * spec_.runs()) {}
+        stage_(o.progress, 9, 4 * spec_.runs(), o.on_progress) {}
 
   // What this report runs, as rig.toml holds it.
   [[nodiscard]] std::string identity() const {

@@ -80,4 +80,10 @@ void add_measured_channels(TimeSeries& series, const TransducerParams& transduce
   add_record(series, "P2", pressure_chain(p, ambient_pressure_Pa, NoiseStream::kPressure2), seed);
 }
 
+void add_scenario_measured_channels(TimeSeries& series, const Scenario& scenario,
+                                    std::uint64_t seed) {
+  if (scenario.transducer.ideal()) return;
+  add_measured_channels(series, scenario.transducer, scenario.ambient_pressure_Pa, seed);
+}
+
 }  // namespace pneumachaos

@@ -1,10 +1,13 @@
 #include "pneumachaos/stability/stability_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "pneumachaos/core/error.hpp"
 #include "stability/linearization.hpp"
 
 namespace pneumachaos {
@@ -86,6 +89,16 @@ StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& op
   }
   r.verdict_full = dominant.real() < 0.0 ? StabilityVerdict::kDamped : StabilityVerdict::kSelfExcited;
   return r;
+}
+
+void set_piston_position(StabilityOptions& options, const Scenario& scenario, double position_mm,
+                         const std::string& name) {
+  const double stroke_mm = scenario.cylinder.stroke_m * 1e3;
+  if (!(position_mm >= 0.0 && position_mm <= stroke_mm)) {
+    throw Error(name, fmt::format("{} mm is not a piston position: expected 0 to the stroke, {} mm",
+                                  position_mm, stroke_mm));
+  }
+  options.equilibrium.position_m = position_mm * 1e-3;
 }
 
 }  // namespace pneumachaos

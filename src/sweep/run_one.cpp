@@ -1,4 +1,8 @@
+#include <fmt/format.h>
+
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "pneumachaos/analysis/analyze.hpp"
 #include "analysis/series_statistics.hpp"
@@ -108,6 +112,18 @@ RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat) 
     r.reason = e.what();
     return r;
   }
+}
+
+std::pair<SweepRun, RunRecord> replay_run(const SweepSpec& spec, std::size_t point,
+                                          std::size_t repeat, const std::string& name) {
+  spec.validate();
+  if (point >= spec.points() || repeat >= spec.repeats) {
+    throw Error(name, fmt::format("run {}:{} is outside the sweep ({} points x {} repeats)", point,
+                                  repeat, spec.points(), spec.repeats));
+  }
+  SweepRun run = simulate_run(spec, point, repeat);
+  RunRecord record = judge_run(spec, run);
+  return {std::move(run), std::move(record)};
 }
 
 }  // namespace pneumachaos

@@ -70,6 +70,8 @@ struct FrictionFits {
   std::vector<std::string> warnings;
   /// The first fit that did not converge, if any.
   [[nodiscard]] const ModelFit* failed() const;
+  /// The fit named preferred_model; none when no fit converged with Fc <= Fs.
+  [[nodiscard]] const ModelFit* preferred() const;
   /// Whether at least one fit converged.
   [[nodiscard]] bool any_converged() const;
 };

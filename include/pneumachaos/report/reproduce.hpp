@@ -2,6 +2,8 @@
 // `reproduce`: the paper's figures and claims from built-in defaults (or a rig of the user's),
 // as a self-contained HTML report with every figure's data and gnuplot script beside it.
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +30,10 @@ struct ReproduceOptions {
   bool full_maps = false;
   std::size_t threads = 0;
   bool progress = true;  ///< stage lines on a terminal only
+  /// Called as on_progress(done, total) with the sweep runs of the whole report done so far
+  /// (total: an upper bound with adaptive maps), from the sweeps' worker threads; for a
+  /// caller that shows progress its own way (the Python module). Empty: not called.
+  std::function<void(std::size_t done, std::size_t total)> on_progress;
   /// Throws Error naming the field that is out of range (an empty out_dir).
   void validate() const;
 };

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "pneumachaos/core/time_series.hpp"
+#include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/model/transducer.hpp"
 
 namespace pneumachaos {
@@ -17,5 +18,11 @@ namespace pneumachaos {
 /// measured channel is already there.
 void add_measured_channels(TimeSeries& series, const TransducerParams& transducer,
                            double ambient_pressure_Pa, std::uint64_t seed);
+
+/// The record `simulate` gives (the command and the Python module alike): with any
+/// transducer.* key set, the scenario's measured channels from `seed` are added; with ideal
+/// transducers the series is left as simulated, so its columns do not double.
+void add_scenario_measured_channels(TimeSeries& series, const Scenario& scenario,
+                                    std::uint64_t seed);
 
 }  // namespace pneumachaos

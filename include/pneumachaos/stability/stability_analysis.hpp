@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/stability/equilibrium.hpp"
 
 namespace pneumachaos {
@@ -53,5 +54,11 @@ struct StabilityResult {
 };
 
 StabilityResult analyze_stability(const Plant& plant, const StabilityOptions& options = {});
+
+/// Takes the chamber volumes at piston position `position_mm` [mm] instead of the default
+/// (the frozen position, else mid-stroke). Throws Error named `name` (the flag or argument the
+/// user typed) for a position outside 0 to the scenario's stroke.
+void set_piston_position(StabilityOptions& options, const Scenario& scenario, double position_mm,
+                         const std::string& name);
 
 }  // namespace pneumachaos

@@ -129,6 +129,12 @@ SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repe
 /// The record of a simulated run: what run_one stores for it.
 RunRecord judge_run(const SweepSpec& spec, const SweepRun& run);
 
+/// One run of the sweep again, bit for bit (`sweep --replay`, the Python module's replay): the
+/// spec validated, the run simulated and judged. Throws Error named `name` (what the user
+/// typed) for a run outside the sweep's points and repeats.
+std::pair<SweepRun, RunRecord> replay_run(const SweepSpec& spec, std::size_t point,
+                                          std::size_t repeat, const std::string& name);
+
 struct PointSummary {
   std::size_t point = 0;
   std::vector<double> coordinates;
