@@ -8,6 +8,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 cmake --preset tsan >/dev/null
-cmake --build --preset tsan -j "$(nproc)" --target unit_tests pneumachaos
+cmake --build --preset tsan -j "$(nproc)" --target sweep_tests calibrate_tests analysis_tests pneumachaos
 export TSAN_OPTIONS="${TSAN_OPTIONS:+$TSAN_OPTIONS:}halt_on_error=1:exitcode=66:second_deadlock_stack=1:suppressions=$PWD/scripts/tsan.supp"
 ctest --preset tsan -j "$(nproc)"
