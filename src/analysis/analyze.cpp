@@ -24,7 +24,7 @@ namespace {
 SeededTestSetup run_evidence_tests(std::span<const double> x, const AnalysisOptions& o,
                                    AnalysisResult& r) {
   const double period = smoothed_period(x, r.delay.delay);
-  const auto quarter = static_cast<std::size_t>(std::lround(period / 4.0));
+  const auto quarter = static_cast<std::size_t>(std::lround(period * kDelayShareOfOrbit));
   SeededTestSetup setup;
   setup.zero_one_step = std::clamp<std::size_t>(quarter, 1, r.delay.delay);
   ZeroOneOptions z = o.zero_one;
@@ -84,19 +84,24 @@ void note_lines(AnalysisResult& r) {
 }  // namespace
 
 void AnalysisOptions::validate() const {
+  // The range AnalysisOptions::verdict_seeds documents: each seed reruns the pivotal random
+  // tests, so the bound keeps a mistyped count from running for hours.
+  constexpr std::size_t kMaxVerdictSeeds = 99;
   zero_one.validate();
   surrogates.validate();
   verdict.validate();
-  if (verdict_seeds < 1 || verdict_seeds > 99 || verdict_seeds % 2 == 0) {
+  if (verdict_seeds < 1 || verdict_seeds > kMaxVerdictSeeds || verdict_seeds % 2 == 0) {
     throw Error(kVerdictSeedsField,
-                fmt::format("must be odd, from 1 to 99 (a majority must exist), got {}",
-                            verdict_seeds));
+                fmt::format("must be odd, from 1 to {} (a majority must exist), got {}",
+                            kMaxVerdictSeeds, verdict_seeds));
   }
 }
 
 namespace {
 
 void check_record(std::span<const double> x, double rate_Hz) {
+  // analyze()'s documented minimum (analyze.hpp), above the exponents' own
+  // kMinExponentSamples: shorter records are refused before any estimator runs.
   constexpr std::size_t kMinSamples = 200;
   if (x.size() < kMinSamples) {
     throw Error("analyze", fmt::format("{} samples is too short to analyse: at least {} are needed",
