@@ -8,7 +8,7 @@ namespace pneumachaos {
 std::size_t fast_fft_size(std::size_t min_size) {
   for (std::size_t n = std::max<std::size_t>(min_size, 1);; ++n) {
     std::size_t m = n;
-    for (std::size_t p : {2, 3, 5}) {
+    for (std::size_t p : {2, 3, 5}) {  // the radices KissFFT has fast butterflies for
       while (m % p == 0) m /= p;
     }
     if (m == 1) return n;
