@@ -12,10 +12,13 @@
 
 namespace pneumachaos::detail {
 
+/// Points per leaf: leaves of 8 or 32 were slower (docs/notes/performance.md "Our own k-d tree").
+inline constexpr std::size_t kDefaultLeafSize = 16;
+
 class KdTree {
  public:
   /// `coords`: point k at coords[k * dim .. k * dim + dim); the tree reports k.
-  KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = 16);
+  KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = kDefaultLeafSize);
 
   /// rank[k]: the place of point k in the tree's storage order (leaf by leaf).
   [[nodiscard]] std::vector<std::size_t> storage_rank() const;
