@@ -203,8 +203,8 @@ void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResul
 
 // The orbit's scales for the divergence curve and the self-repetition windows. Under a
 // resolved noise floor the maxima are counted above the noise (mean_maxima_spacing with its
-// sd): the noise's own wiggles made a rig's noisy cycle of 67 ms read 21 ms, its divergence
-// curve was read over a third of an orbit and its windows no longer repeated
+// sd): counted on the raw record, the noise's own wiggles make a rig's noisy cycle of 67 ms read
+// 21 ms, its divergence curve is read over a third of an orbit and its windows do not repeat
 // (docs/notes/analysis.md "Noise floor"). The embedding and the 0-1 test keep the clean count.
 struct OrbitScales {
   double maxima_spacing = 0.0, period = 0.0;

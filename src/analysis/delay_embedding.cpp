@@ -93,8 +93,8 @@ const ValueOrder& value_order(std::span<const double> x) {
 // Vectors 0 .. points-1 in lexicographic order of their coordinates, equal vectors by time,
 // for a series with repeats. A stable counting sort by each coordinate's value rank, last
 // coordinate first: the same order as comparing whole vectors (and then indices), in
-// dimension x (N + distinct values) steps. The comparison sort it replaces was 2.5 % of a
-// sweep, whose records rest (docs/notes/performance.md, "Neighbour search").
+// dimension x (N + distinct values) steps. A comparison sort costs 2.5 % of a sweep, whose
+// records rest (docs/notes/performance.md, "Neighbour search").
 std::vector<std::size_t> lexicographic_order(const DelayEmbedding& e, std::size_t points) {
   const ValueOrder& values = value_order(e.series());
   std::vector<std::size_t> order(points), next(points);

@@ -1,8 +1,8 @@
 #pragma once
 // An exact k-d tree whose points are stored in tree order: each node's points are one
 // contiguous block of rows, so building and searching read memory in sequence rather than
-// gathering each coordinate through a permutation (nanoflann's layout). On this machine that
-// gather was half of a whole analysis (docs/notes/performance.md). Internal to the analysis module;
+// gathering each coordinate through a permutation (nanoflann's layout), a gather that costs
+// half of a whole analysis (docs/notes/performance.md). Internal to the analysis module;
 // results are reported through nanoflann's result-set protocol (addPoint, worstDist), and the
 // search prunes with the incremental distance to the cell (Arya & Mount), as nanoflann does.
 
@@ -12,7 +12,7 @@
 
 namespace pneumachaos::detail {
 
-/// Points per leaf: leaves of 8 or 32 were slower (docs/notes/performance.md "Our own k-d tree").
+/// Points per leaf: leaves of 8 or 32 are slower (docs/notes/performance.md "Our own k-d tree").
 inline constexpr std::size_t kDefaultLeafSize = 16;
 
 class KdTree {

@@ -135,7 +135,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   std::vector<std::size_t> references;
   for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
   // All neighbours first (searched in the tree's order: docs/notes/performance.md), then the sums
-  // in the references' order, so every sum adds the same terms in the same order as before.
+  // in the references' order, so every sum adds its terms in record order whatever the search's.
   const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1), logs(p.K + 1);
   for (std::size_t r = 0; r < references.size(); ++r) {
@@ -149,7 +149,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
         p.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
                   : x.subspan(nb.index, span);
     squared_pair_distances(x.data() + i, other.data(), e.dimension(), o.delay, d2);
-    log_array(d2, logs);  // vectorised: the logarithms were half of the curve's time
+    log_array(d2, logs);  // vectorised: scalar logarithms take half the curve's time
     add_log_distances(d2, logs, bs.sum[b], bs.count[b]);
     ++bs.references;
   }

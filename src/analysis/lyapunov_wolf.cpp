@@ -225,7 +225,7 @@ class WolfGeometry {
       double misalignment = d;  // the first neighbour: simply the nearest
       if (old_sep != nullptr) {
         // The smallest angle to the old separation is the largest cosine: acos is decreasing,
-        // and it was a fifth of a whole analysis of the Henon map, where replacements are frequent.
+        // and costs a fifth of a whole analysis of the Henon map, where replacements are frequent.
         double dot = 0.0;
         for (std::size_t k = 0; k < o_.dimension; ++k) dot += cand_[k] * (*old_sep)[k];
         misalignment = -std::clamp(dot / (d * old_norm), -1.0, 1.0);

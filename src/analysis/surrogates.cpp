@@ -174,7 +174,7 @@ SurrogateTest surrogate_test(std::span<const double> x, const PredictionOptions&
   t.samples = n;
   t.offset = offset;
   // Each surrogate's seed follows from the test's seed and its index alone, so the surrogates
-  // are made side by side on every core (they were three quarters of an analysis) and the
+  // are made side by side on every core (they are three quarters of an analysis) and the
   // statistics are the same at any thread count.
   t.surrogate_statistics.assign(o.count, 0.0);
   const auto one = [&](std::size_t k) {

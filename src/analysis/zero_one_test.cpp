@@ -75,8 +75,8 @@ std::vector<double> mean_square_displacement(const std::vector<std::complex<doub
 
 // e^{i k c} for k = 1 .. count: each from the one before by one rotation, and from the
 // library's sine and cosine every kAnchor steps, so the rounding of the products cannot
-// build up beyond ~kAnchor ulp (1e-14; they were a tenth of a 1e4 analysis as one sine and
-// cosine per sample and frequency: docs/notes/performance.md).
+// build up beyond ~kAnchor ulp (1e-14; one sine and cosine per sample and frequency cost a
+// tenth of a 1e4 analysis: docs/notes/performance.md).
 std::vector<std::complex<double>> unit_phases(std::size_t count, double c) {
   constexpr std::size_t kAnchor = 64;
   std::vector<std::complex<double>> e(count);
