@@ -84,8 +84,7 @@ void note_lines(AnalysisResult& r) {
 }  // namespace
 
 void AnalysisOptions::validate() const {
-  // The range AnalysisOptions::verdict_seeds documents: each seed reruns the pivotal random
-  // tests, so the bound keeps a mistyped count from running for hours.
+  // The upper end of the range AnalysisOptions::verdict_seeds documents (odd, 1 to 99).
   constexpr std::size_t kMaxVerdictSeeds = 99;
   zero_one.validate();
   surrogates.validate();

@@ -8,7 +8,7 @@
 namespace pneumachaos::detail {
 
 /// The standard normal's 97.5 % quantile: +-kNormal95 standard errors is a two-sided 95 %
-/// interval, the form every uncertainty of the divergence exponent is kept in.
+/// interval (the segments' standard error and the widened uncertainty are scaled to it).
 inline constexpr double kNormal95 = 1.96;
 
 struct SegmentSlopes {

@@ -17,7 +17,8 @@ namespace {
 // Bins per axis of the mutual information: sqrt(N / kSamplesPerBinSquared), clipped to
 // [kMinBins, kMaxBins] (the contract of mutual_information's `bins` in the header). The
 // joint histogram has B^2 cells, so N / B^2 >= kSamplesPerBinSquared pairs fill each cell on
-// average; the plug-in bias (B - 1)^2 / 2N then stays below 1 / (2 kSamplesPerBinSquared).
+// average where B is not clipped; the plug-in bias (B - 1)^2 / 2N then stays below
+// 1 / (2 kSamplesPerBinSquared).
 constexpr double kSamplesPerBinSquared = 10.0;
 constexpr std::size_t kMinBins = 8;
 constexpr std::size_t kMaxBins = 64;

@@ -11,7 +11,7 @@ namespace {
 
 // A run holds at least kMinSegments agreeing segments (agreeing_runs' contract: "at least
 // three segments"). The spacing is shrunk so that the curve has at least kMinSegmentsPerCurve
-// segments, room for one run and a segment before it.
+// segments, one more than a run needs.
 constexpr std::size_t kMinSegments = 3;
 constexpr std::size_t kMinSegmentsPerCurve = 4;
 

@@ -19,24 +19,23 @@ namespace pneumachaos {
 namespace {
 
 // The horizon's default, min(N / kHorizonRecordShare, kHorizonPeriods orbital periods) and at
-// least kMinHorizon steps (DivergenceOptions::horizon): long enough for the curve to rise
-// through its linear region and reach saturation on every reference system, short enough
-// that a tenth of the record leaves references to follow (docs/notes/analysis.md, "horizon 8
-// orbital periods").
+// least kMinHorizon steps (DivergenceOptions::horizon; docs/notes/analysis.md, "horizon 8
+// orbital periods"): several orbits for the curve to rise and saturate, capped at a tenth of
+// the record so that the rest holds the references.
 constexpr std::size_t kMinHorizon = 20;
 constexpr std::size_t kHorizonRecordShare = 10;
 constexpr std::size_t kHorizonPeriods = 8;
 
-// Delay vectors beyond the horizon, margins and Theiler window a record must have: fewer
-// leave no pair to follow.
+// Delay vectors a record must have beyond the horizon, margins and Theiler window; with fewer
+// the estimator refuses it (a longer record is needed).
 constexpr std::size_t kMinSpareVectors = 10;
 
-// References are capped by max_reference_steps / horizon, but never below this many: a long
-// horizon must still average enough pairs for a smooth curve.
+// References are capped by max_reference_steps / horizon, but the cap never falls below this
+// many, however long the horizon.
 constexpr std::size_t kMinReferenceCap = 200;
 
-// Fewest references with a neighbour: with fewer, the jackknife's 10 blocks hold a couple of
-// pairs each and the curve is one pair's noise.
+// Fewest references with a neighbour the curve is averaged over: two per block at the default
+// 10 jackknife blocks.
 constexpr std::size_t kMinReferences = 20;
 
 // The window's sensitivity is measured by trimming one spacing from either end, and only on

@@ -16,8 +16,7 @@ namespace pneumachaos {
 namespace {
 
 // Evolution interval's default: a quarter of the orbital period (WolfOptions::evolve;
-// docs/notes/analysis.md "evolution 1/4 period"), short enough that a pair replaced at
-// max_scale has not yet left the linear regime.
+// docs/notes/analysis.md "evolution 1/4 period").
 constexpr std::size_t kEvolvesPerPeriod = 4;
 
 // Smallest separation's default, as a share of the attractor's diameter (WolfOptions::

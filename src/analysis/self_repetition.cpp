@@ -18,8 +18,8 @@ namespace {
 // kMinFitWindows windows on (two always lie on a line).
 constexpr std::size_t kMinFitWindows = 3;
 
-// Added to the mismatch before its logarithm, so that an exact repeat (mismatch 0) reads a
-// finite, very small value: far below any mismatch a sampled record reaches.
+// Added to the mismatch before its logarithm, so that an exact repeat (mismatch 0) reads
+// ln 1e-12 ~ -27.6, a finite floor, instead of -inf.
 constexpr double kExactRepeatMismatch = 1e-12;
 
 // Fewest samples a repetition is looked for in; shorter records are not run.

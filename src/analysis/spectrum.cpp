@@ -20,8 +20,8 @@ constexpr std::size_t kMinSegments = 8;
 constexpr std::size_t kMinSegmentLength = 64;
 constexpr std::size_t kMaxSegmentLength = 8192;
 
-// Shortest segment accepted (SpectrumOptions::segment_length): Hann's main lobe alone spans
-// four bins.
+// Shortest segment accepted for SpectrumOptions::segment_length: a floor on the user's choice
+// (the default never goes below kMinSegmentLength).
 constexpr std::size_t kShortestSegment = 8;
 
 // Exact zeros of the PSD (a constant record) enter the flatness's log-mean as this instead.

@@ -16,17 +16,16 @@ namespace pneumachaos {
 namespace {
 
 // The mean square displacement is read up to n_cut = N / kDisplacementShare (Gottwald &
-// Melbourne 2009: n_cut << N, N / 10 in their implementation notes), where it still averages
-// many increments.
+// Melbourne 2009 use n_cut = N / 10: n_cut << N keeps each displacement an average).
 constexpr std::size_t kDisplacementShare = 10;
 
-// Frequencies c are drawn from (pi / 5, 4 pi / 5) (Gottwald & Melbourne 2009: away from 0 and
-// pi, where resonances with the record's own frequencies are likeliest).
+// Frequencies c are drawn from (pi / 5, 4 pi / 5), the interval Gottwald & Melbourne 2009 draw
+// them from (docs/notes/analysis.md "The 0-1 test").
 constexpr double kLowestFrequency = std::numbers::pi / 5.0;
 constexpr double kFrequencyRange = 3.0 * std::numbers::pi / 5.0;
 
-// Fewest points the validator accepts for min_points: a correlation of n_cut = N / 10
-// displacements against n needs at least two.
+// Fewest points the validator accepts for min_points: at 20 points n_cut = N / 10 is 2, the
+// fewest displacements a correlation with n can be computed on.
 constexpr std::size_t kFewestPoints = 20;
 
 double correlation(const std::vector<double>& a, const std::vector<double>& b) {

@@ -36,10 +36,9 @@ inline constexpr double kNoiseBinWidth = 2.0;
 /// or more: then kDelayShareOfOrbit of the orbit, where the first minimum of an oscillation's
 /// I lies, with `method` saying so. Orbits under 8 samples (maps, noise) leave `c` as it is.
 DelayChoice delay_within_an_orbit(DelayChoice c, double orbit_samples);
-/// A quarter of the orbit: a sine's I(tau) has its first minimum at a quarter period (Fraser &
-/// Swinney 1986), where x(t + tau) is as independent of x(t) as the oscillation allows. The
-/// analysis's evidence scale caps the delay at the same share (docs/notes/analysis.md
-/// "Evidence scale").
+/// A quarter of the orbit: where a sine's I(tau) has its first minimum (mutual_information
+/// above). The analysis's evidence scale caps the delay at the same share
+/// (docs/notes/analysis.md "Evidence scale").
 inline constexpr double kDelayShareOfOrbit = 0.25;
 
 struct DimensionChoice {
