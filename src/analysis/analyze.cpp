@@ -54,7 +54,10 @@ SeededTestSetup run_evidence_tests(std::span<const double> x, const AnalysisOpti
 // signature of linear noise (docs/notes/analysis.md "Wolf's status").
 void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
               AnalysisResult& r) {
-  if (r.prediction.computed && r.prediction.ratio() >= 1.0) {
+  // For a linear Gaussian process the linear predictor is optimal: a local-constant error at
+  // or above the linear one means no nonlinear structure (docs/notes/analysis.md "Determinism").
+  constexpr double kLinearNoiseRatio = 1.0;
+  if (r.prediction.computed && r.prediction.ratio() >= kLinearNoiseRatio) {
     r.wolf_status = fmt::format(
         "not run: no deterministic structure (local-constant prediction error {:.3g} >= linear "
         "{:.3g}); an exponent is not defined for noise",
