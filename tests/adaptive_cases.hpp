@@ -1,6 +1,6 @@
 #pragma once
-// The maps on which adaptive sweeps are validated against the full grid (issue 35; the long
-// test AdaptiveSweep.PaperGridAgreesWithTheFullGrid and bench/bench_adaptive; docs/sweep.md
+// The maps on which adaptive sweeps are validated against the full grid (the long test
+// AdaptiveSweep.PaperGridAgreesWithTheFullGrid and bench/bench_adaptive; docs/sweep.md
 // "Adaptive maps"): the paper's four maps of the default rig, the simple rig's Fig. 4 map,
 // and the default rig on a grid of small S1 whose borders cross S1.
 #include <string>
@@ -14,7 +14,7 @@ namespace pneumachaos {
 struct AdaptiveCase {
   std::string name;
   SweepSpec spec;         ///< the full grid's (adaptive.enabled false), coarse step the default
-  double min_runs_ratio;  ///< the issue's goal: 4x fewer runs on the paper's maps
+  double min_runs_ratio;  ///< full-grid runs per adaptive run at least this (4 on the paper's maps)
 };
 
 /// `variants_dir`: docs/variants. Each map as reproduce runs it: the paper's Ps and total moving

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bad_input_tour.sh CLI RIG TABLE [NAME]
-# The bad-input tour (issue 33, docs/reliability.md "The bad-input tour"): every case of TABLE,
+# The bad-input tour (docs/reliability.md "The bad-input tour"): every case of TABLE,
 # or only the case NAME, run as `pneumachaos ARGS` in a work directory holding the fixtures
 # below. A case passes when the exit code is exactly CODE, standard error and output together
 # match the extended regex, and (for a non-zero code) the work directory is unchanged: no
@@ -43,8 +43,9 @@ sed -i 's/"ss_gauge_bare.csv" }/"ss_gauge_bare.csv", units = { P1 = "Pa g", P2 =
 printf '\n[optimizer]\npopulation = 5\nmax_evaluations = 10\n' >>"$W/cal_ss_gauge_bare.toml"
 printf '\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10' >"$W/bin.csv"  # an image under a record's name
 mkdir "$W/adir"
-# A named pipe stands for a device: a regression that renamed a finished file over `-o
-# /dev/null` (as root) would replace the machine's /dev/null; over this pipe it harms nothing.
+# A named pipe stands for a device: the outputs must write into a device, never rename a
+# finished file over it (over `-o /dev/null` as root that would replace the machine's
+# /dev/null); over this pipe a failure harms nothing.
 mkfifo "$W/pipe"
 
 n=0 failed=0

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # kill -9 a small calibration at KILLS random moments, resuming each time: the final outputs
-# must be byte-identical to an uninterrupted run's (issue 36).
+# must be byte-identical to an uninterrupted run's.
 set -euo pipefail
 cli=$1
 spec=$2

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# mpirun -np 2 against 2 threads: the same calibration gives byte-identical outputs (issue 36).
+# mpirun -np 2 against 2 threads: the same calibration gives byte-identical outputs.
 # Exits 77 (CTest: skipped) when the binary has no MPI or no launcher is installed.
 set -euo pipefail
 cli=$1

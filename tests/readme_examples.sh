@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # readme_examples.sh CLI README RIG [PYTHON PYTHONPATH]: runs every `pneumachaos` command of the README's ```sh
-# blocks as written (issue 33), in README order, in one work directory; each must exit 0.
+# blocks as written, in README order, in one work directory; each must exit 0.
 # The guide's commands are run by tests/docs_site.sh the same way.
 # The lines are taken from the README mechanically: a block's lines that start with
 # `pneumachaos` or `mpirun`, or pipe into `pneumachaos`, joined across a trailing backslash,
@@ -17,7 +17,7 @@ mkdir -p "$bin" && ln -s "$cli" "$bin/pneumachaos"
 export PATH="$bin:$PATH"
 
 # Long jobs, each run elsewhere in the suite on a smaller scale: pattern -> reason. The README
-# keeps only quick examples today (the guide's pages hold the rest, run by tests/docs_site.sh).
+# keeps only quick examples (the guide's pages hold the rest, run by tests/docs_site.sh).
 declare -A SKIP=()
 
 # The files the examples read, as a user would have them: their own cylinder (the simple

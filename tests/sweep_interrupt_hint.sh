@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # sweep_interrupt_hint.sh CLI: a sweep interrupted by SIGINT (Ctrl-C) or SIGTERM says where its
 # finished runs are and that --resume finishes it; it ends by that signal, and the resume
-# finishes the sweep (issue 33).
+# finishes the sweep.
 set -uo pipefail
 set -m  # background jobs in their own group with SIGINT at its default, as at a terminal
 cli=$1

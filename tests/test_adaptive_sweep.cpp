@@ -169,7 +169,7 @@ TEST(AdaptiveSweep, NeedsExactlyTwoAxesAndACoarseStep) {
   spec = small_map(true);
   spec.adaptive.coarse_step = 0;
   EXPECT_THROW(spec.validate(), Error);
-  // Off, the full sweep's identity is what it was before the option.
+  // Off, the sweep's identity is the full sweep's: the option's other fields change nothing.
   SweepSpec off = small_map(false);
   off.adaptive.coarse_step = 7;
   EXPECT_EQ(off.fingerprint(), small_map(false).fingerprint());
@@ -198,7 +198,7 @@ TEST(AdaptiveSweep, FollowingTheMotionInfersNoMotionWrongly) {
   std::filesystem::remove_all(dir);
 }
 
-// Issue 35's validation (label long; docs/sweep.md "Adaptive maps"): the paper's grid, 5
+// The adaptive sweep's validation (label long; docs/sweep.md "Adaptive maps"): the paper's grid, 5
 // runs per point, full against adaptive in the same process. Goals: >= 99 % of points in the
 // same stick-slip class, >= 98 % in the same chaos class, each region's area within its
 // border's length in grid steps, and on the paper's maps >= 4x fewer runs. The Fig. 4 map,

@@ -1,5 +1,6 @@
 // The claim rules (docs/report.md): each shown agreeing and failing on plausible inputs, and
-// each misreading of the earlier rules shown with an input on which the old rule went wrong.
+// each tempting misreading of the paper shown with an input on which a rule built on it goes
+// wrong.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,16 +40,16 @@ TEST(ClaimRules, SettlingRateFollowsTheEnvelope) {
   EXPECT_FALSE(settling(swing, kRate).settled);
 }
 
-// Misreading: the old rule compared std/mean after 1 s, when both circuits had settled; the
-// paper contrasts the transients. Two responses that both settle within 1 s, one ten times
-// faster: the old measure sees nothing after 1 s, the decay rates see the contrast.
+// Misreading: comparing std/mean after 1 s, when both circuits have settled; the paper
+// contrasts the transients. Two responses that both settle within 1 s, one ten times faster:
+// std/mean after 1 s sees nothing, the decay rates see the contrast.
 TEST(ClaimRules, Fig2ComparesTheTransientsNotTheSettledState) {
   const auto slow = step_response(0.066, 5.0, 120.0, 3.0);  // meter-out: a1 ~ B
   const auto fast = step_response(0.160, 50.0, 60.0, 3.0);  // meter-in: b1 >> B
   const double d_slow = settling(slow, kRate).decay_rate_per_s;
   const double d_fast = settling(fast, kRate).decay_rate_per_s;
-  // What the old rule measured, std / |mean| after 1 s: both have settled there, so it could
-  // not tell the circuits apart.
+  // What the misreading measures, std / |mean| after 1 s: both have settled there, so it
+  // cannot tell the circuits apart.
   const auto after_1s = [](const std::vector<double>& v) {
     double sum = 0, sq = 0, n = static_cast<double>(v.size() - 1000);
     for (std::size_t k = 1000; k < v.size(); ++k) sum += v[k];
@@ -150,7 +151,7 @@ TEST(ClaimRules, FrictionLoopNeedsHysteresisAndNoRest) {
   EXPECT_FALSE(loops_without_standstill(r).passes());
 }
 
-// Misreading: "< 1 mm/s for < 1 % of the time" counted every zero crossing of a reversing
+// Misreading: "< 1 mm/s for < 1 % of the time" counts every zero crossing of a reversing
 // piston as standstill. A swing of 50 mm/s about zero spends 1.3 % of its time below 1 mm/s
 // without ever resting: no standstill by the paper's word.
 TEST(ClaimRules, AReversalIsNotAStandstill) {
@@ -158,7 +159,7 @@ TEST(ClaimRules, AReversalIsNotAStandstill) {
   std::vector<double> F;
   for (double x : wave(0.0, 0.05, 10.0, 0.005)) F.push_back(-60.0 * x);
   const auto below = std::count_if(v.begin(), v.end(), [](double x) { return std::abs(x) < 1e-3; });
-  EXPECT_GT(static_cast<double>(below) / static_cast<double>(v.size()), 0.01);  // the old rule's fail
+  EXPECT_GT(static_cast<double>(below) / static_cast<double>(v.size()), 0.01);  // misread: fails
   const FrictionLoop l = measure_friction_loop(v, F, kRate);
   EXPECT_EQ(l.rests, 0u);
   EXPECT_LT(l.longest_rest_s, kRestDuration_s);
@@ -188,8 +189,8 @@ TEST(ClaimRules, FoldAndStretchOnTheRecordsOwnScale) {
 
 // Misreading: the paper's 3-D plot has no units, so its bands are relative to the plot's
 // 0-180 range. A record swinging to 400 mm/s that turns back near its top folds "between 180
-// and 140" of its own scale; the old rule demanded 140-180 mm/s and failed it. The old rule's
-// extra inequality (stretching faster below the band than in it) is not the paper's either.
+// and 140" of its own scale; demanding 140-180 mm/s fails it. An extra inequality
+// (stretching faster below the band than in it) is not the paper's either.
 TEST(ClaimRules, FoldBandScalesWithTheRecord) {
   const auto v = swing(0.400, 8000);
   const FoldStretch f = measure_fold_stretch(v, kRate, 3, 30, 60);

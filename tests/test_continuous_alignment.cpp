@@ -1,5 +1,5 @@
-// Interpolation between samples never reads outside the record (issue: a heap-buffer overflow
-// at the record's end reached from both Lyapunov estimators).
+// Interpolation between samples never reads outside the record, at its ends too, from either
+// Lyapunov estimator (a read past the end is a heap-buffer overflow).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,10 +28,10 @@ struct FencedParabola {
   }
 };
 
-// closest_offset's two Newton steps written with the interpolant at every point (as it was
-// before its first step read whole samples directly): the offsets must be the same bit for
-// bit, near the record's ends too (where the stencils are clamped and the shortcut is not
-// taken), and on a record that rests at exactly 0 (signs of zero).
+// closest_offset's two Newton steps written with the interpolant at every point (its first
+// step reads whole samples directly, a shortcut): the offsets must be the same bit for bit,
+// near the record's ends too (where the stencils are clamped and the shortcut is not taken),
+// and on a record that rests at exactly 0 (signs of zero).
 double closest_offset_by_interpolation(const DelayEmbedding& e, std::size_t i, std::size_t j) {
   double s = 0.0;
   for (int iteration = 0; iteration < 2; ++iteration) {

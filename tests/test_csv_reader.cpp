@@ -127,7 +127,8 @@ TEST(CsvReader, BadInputNamesTheLineAndColumn) {
 
 
 // The reader cuts lines and fields itself (docs/notes/performance.md "Reading a record at once"):
-// the cases a string stream used to decide. Expected values written out by hand.
+// quoting, blanks, comments and separators are decided by that code, so each case is checked
+// here against expected values written out by hand.
 TEST(CsvReader, LinesAndFieldsAsAStreamWouldCutThem) {
   CsvSeriesOptions o;
   o.rate_Hz = 10.0;
@@ -153,8 +154,8 @@ TEST(CsvReader, LinesAndFieldsAsAStreamWouldCutThem) {
   EXPECT_EQ(b.channels().front().values[1], 4.0);
 }
 
-// Issue 33: a rate that disagrees with the time column, a headerless file whose first column
-// is a clock, and a ';'-separated export are refused with what to do, never read silently.
+// A rate that disagrees with the time column, a headerless file whose first column is a clock,
+// and a ';'-separated export are refused with what to do, never read silently.
 TEST(CsvReader, ARateMustAgreeWithTheTimeColumn) {
   CsvSeriesOptions o;
   o.rate_Hz = 2000.0;
@@ -215,7 +216,7 @@ TEST(CsvReader, AHeaderlessClockColumnIsNotAnalysedByDefault) {
             "1 to analyse the first column anyway)");
   o.column = "1";
   EXPECT_EQ(parse_csv_series(text, "rec.csv", o).channels().front().values[3], 0.003);
-  o.column = "v";  // a first column that is no clock is read as before
+  o.column = "v";  // a first column that is no clock is read as data
   EXPECT_EQ(parse_csv_series("1 5\n0.5 6\n2 4\n", "rec.csv", o).channels().front().values[1], 0.5);
 }
 

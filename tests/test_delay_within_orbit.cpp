@@ -1,5 +1,5 @@
-// The embedding delay of an oscillating record stays under one orbit (issue 34: dysts's
-// ShimizuMorioka had its mutual-information minimum three orbits out, Thomas two, and got no
+// The embedding delay of an oscillating record stays under one orbit (dysts's ShimizuMorioka
+// has its mutual-information minimum three orbits out, Thomas two: with that delay they get no
 // exponent and no verdict); a record resting between slips keeps its mutual-information delay.
 #include <gtest/gtest.h>
 

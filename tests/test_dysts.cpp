@@ -2,7 +2,7 @@
 // data: tests/data/dysts/README.md), none of which the analysis was tuned on. The truth is the
 // exponent from the equations by the two-trajectory method, computed here; dysts's own estimate
 // is printed beside it (they disagree on several systems: the page lists them). Prints the
-// table; asserts what holds today, so that a change that loses ground fails. The whole table
+// table; asserts floors at the measured accuracy, so that a change that loses ground fails. The whole table
 // takes a few minutes (label `long`); the two-flow check below runs by default.
 #include <gtest/gtest.h>
 
@@ -77,11 +77,11 @@ TEST(Dysts, ExponentAndVerdictOnEveryFlow) {
              "regular records: {}, called chaotic {}\n",
              s5.text(), s10.text(), regular, regular_called_chaotic);
   EXPECT_GT(regular, 0u);
-  // The goal is none. Two today, both DequanLi's: its record catches a chaotic transient
+  // The goal is none. At most two, both DequanLi's: its record catches a chaotic transient
   // of dysts's start (its two trajectories separate by e^5.8 over the whole record, as little
   // as a torus's do) and the divergence curve's first 100 samples read as a rise (the page).
   EXPECT_LE(regular_called_chaotic, 2u);
-  // Below the goals of 90 % within 10 % and 90 % covered (not met: the page says why).
+  // Floors below the goals of 90 % within 10 % and 90 % covered (not met: the page says why).
   const double n10 = static_cast<double>(s10.records);
   EXPECT_GE(s10.within10 / n10, kWithin10Floor);
   EXPECT_GE(s10.covered / n10, kCoveredFloor);

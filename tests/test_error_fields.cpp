@@ -43,7 +43,7 @@ TEST(ErrorFields, GridAxisKeepsItsText) {
   EXPECT_EQ(e.field(), kGridAxisField.id);
   EXPECT_EQ(e.detail(), " circuit.S1_mm2=3:2:1");
   EXPECT_STREQ(e.what(), "grid axis circuit.S1_mm2=3:2:1: FROM 3 lies above TO 2");
-  // An unknown key inside the axis: the key follows the axis text, as before.
+  // An unknown key inside the axis: the key follows the axis text, as for a bad range.
   const Error unknown = caught([] { parse_grid_axis("circuit.S3_mm2=1:2:1"); });
   EXPECT_EQ(unknown.field(), kGridAxisField.id);
   EXPECT_EQ(unknown.detail().rfind(" circuit.S3_mm2=1:2:1: circuit.S3_mm2", 0), 0u)

@@ -1,5 +1,5 @@
 // Friction from a record (docs/friction.md): the Savitzky-Golay differentiator, stick
-// detection, and the validation of issue 13: records from our own simulator with known
+// detection, and the validation: records from our own simulator with known
 // friction, degraded as a rig's A/D degrades them, must give back Fs, Fc within 5 %, B within
 // 10 %, vs within 30 %.
 
@@ -179,7 +179,7 @@ TEST(FrictionValidation, DISABLED_AccuracyOverSeeds) {
 
 namespace {
 
-// Issue 13's targets: Fs, Fc within 5 %, B within 10 %, vs within 30 %.
+// The validation's targets: Fs, Fc within 5 %, B within 10 %, vs within 30 %.
 void expect_recovered(const Case& c, unsigned seed) {
   const Scenario s = rig(c.kind, c.S2_mm2);
   Degradation d;
@@ -302,7 +302,7 @@ TEST(FrictionValidation, PressureDependentFit) {
 
 TEST(FrictionValidation, LuGreSealRecord) {
   // The virtual rig's LuGre seal (Fc 19.7 N, Fs 47 N, vs 45 mm/s, delta 1, sigma0 1e5 N/m,
-  // sigma1 26 N s/m, sigma2 26 N s/m; the default's before issue 12) on one rigid mass, 6 s,
+  // sigma1 26 N s/m, sigma2 26 N s/m; the frozen light-piston rig's) on one rigid mass, 6 s,
   // degraded: the static laws cannot follow the bristles through the reversals, LuGre can and
   // is preferred.
   Scenario s = frozen_light_piston();

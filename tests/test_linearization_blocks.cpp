@@ -116,7 +116,7 @@ TEST(LinearizationBlocks, ShortSlipLengthsApproachTheMemorylessSeal) {
   EXPECT_LT(memory.eigenvalues.front().real(), 100.0 * plain.eigenvalues.front().real());
 }
 
-// Long slip lengths keep the states slow: the drop's negative slope no longer acts at once,
+// Long slip lengths keep the states slow: the drop's negative slope does not act at once,
 // and the modes move (the block is not ignored).
 TEST(LinearizationBlocks, LongSlipLengthsMoveTheModes) {
   const Linearized plain = linearize(with({}));

@@ -160,9 +160,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Reference{"rossler", [] { return rossler_x(10000); }, 0.1, 0.0714}),
     [](const auto& info) { return std::string(info.param.name); });
 
-// Not one lucky record: eight records of each flow from different starting points. The
-// earlier design (pairs skipped for a period after each replacement) read Lorenz +22 % on
-// average with records up to +44 %; Rossler was its better case.
+// Not one lucky record: eight records of each flow from different starting points, each within
+// the bound below (skipping pairs for a period after each replacement instead of the settled
+// handoff reads Lorenz +22 % on average, up to +44 %: docs/notes/analysis.md).
 TEST(Wolf, FlowsAcrossEightRecords) {
   for (const bool lorenz : {true, false}) {
     double sum = 0.0, worst = 0.0;
@@ -202,7 +202,7 @@ TEST(Wolf, StrictlyPeriodicRecordMeasuresNoStretching) {
 }  // namespace
 }  // namespace pneumachaos
 
-// Honest uncertainties (issue 11 item 4, docs/notes/analysis.md "Open"): over records of known
+// Honest uncertainties (docs/notes/analysis.md "Open"): over records of known
 // exponent, with the analysis' own automatic parameters, the true value must lie inside the
 // reported 95 % interval (+-1.96 sigma) on at least 90 % of them (asserted for the divergence
 // exponent; Wolf's coverage is printed).

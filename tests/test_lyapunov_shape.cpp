@@ -1,6 +1,6 @@
 // A record with a clear deterministic signature whose divergence curve bends all the way gets a
-// wide estimate from its local slopes rather than nothing (issue 34; docs/notes/
-// exponent_validation.md), and only such a record: noise gets none.
+// wide estimate from its local slopes rather than nothing (docs/notes/exponent_validation.md),
+// and only such a record: noise gets none.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // The rules read from the maps (docs/report.md): chaos location, region changes, the "no
-// chaos" tolerance and the sign rule, with the old rules' misreadings shown failing.
+// chaos" tolerance and the sign rule, with misreadings of the paper shown failing.
 #include <gtest/gtest.h>
 
 #include "pneumachaos/report/claim_rules.hpp"
@@ -38,7 +38,7 @@ TEST(MapRules, ChaosNextToTheBorderAgreesAndFarFromItFails) {
   EXPECT_FALSE(chaos_highest_near_border(far.pts, far.grid).passes());
 }
 
-// Misreading: the old "near" reached two S2 rows from a border; two steps away is not the
+// Misreading: a "near" that reaches two S2 rows from a border; two steps away is not the
 // neighbourhood of one grid step.
 TEST(MapRules, TwoStepsFromTheBorderIsNotNearIt) {
   auto two_away = make_map(10, 30, 2, [](auto, auto j) { return j == 3 ? 0.6 : 0.0; });
@@ -48,7 +48,7 @@ TEST(MapRules, TwoStepsFromTheBorderIsNotNearIt) {
 }
 
 // Misreading: "S1 > S2 holds on every point of the paper's grid" is false (S2 reaches 4.40,
-// S1 3.70), and "S1 relatively small" was never tested.
+// S1 3.70); "S1 relatively small" is a claim of its own, tested here too.
 TEST(MapRules, S1AboveS2AndSmallAreasAreTested) {
   auto low = make_map(26, 30, 2, [](auto i, auto j) { return j == 2 && i < 8 ? 1.0 : 0.0; });
   EXPECT_TRUE(chaos_highest_where_s1_above_s2(low.pts, low.grid).passes());
@@ -80,9 +80,9 @@ TEST(MapRules, RegionChanges) {
   EXPECT_FALSE(region_more_than_halved(40, 20).passes());  // exactly half is not more
 }
 
-// Misreading: the 100 %-chaos contraction was scored on base regions of 0-4 points of 780.
+// Misreading: scoring the 100 %-chaos contraction on base regions of 0-4 points of 780.
 TEST(MapRules, AHalvingOfAFewPointsIsNotReproduced) {
-  EXPECT_FALSE(region_more_than_halved(1, 0).evaluated());  // the old rule: "agrees"
+  EXPECT_FALSE(region_more_than_halved(1, 0).evaluated());  // the misreading: "agrees"
   EXPECT_FALSE(region_more_than_halved(23, 2).evaluated());
   EXPECT_TRUE(region_more_than_halved(24, 2).evaluated());
 }
@@ -95,14 +95,14 @@ TEST(MapRules, AFewPoints) {
   EXPECT_TRUE(a_few_points(3, 42).passes());
 }
 
-// Misreading: "completely prevents" was scored as zero chaotic runs of 3,900, stricter than the
+// Misreading: scoring "completely prevents" as zero chaotic runs of 3,900, stricter than the
 // verdict's own false-positive rate (14 of 197 judged non-chaotic rig records) allows.
 TEST(MapRules, NoChaosAllowsTheVerdictsFalsePositives) {
   const std::size_t allow = false_positive_allowance(3900);
   // Binomial(3900, 0.071): mean 277, sd 16; the 95 % quantile lies near mean + 1.645 sd.
   EXPECT_GT(allow, 295u);
   EXPECT_LT(allow, 312u);
-  EXPECT_TRUE(no_chaos_beyond_false_positives(1, 3900).passes());  // the old rule: "disagrees"
+  EXPECT_TRUE(no_chaos_beyond_false_positives(1, 3900).passes());  // the misreading: "disagrees"
   EXPECT_TRUE(no_chaos_beyond_false_positives(allow, 3900).passes());
   EXPECT_FALSE(no_chaos_beyond_false_positives(allow + 1, 3900).passes());
   EXPECT_FALSE(no_chaos_beyond_false_positives(900, 3900).passes());
@@ -115,7 +115,7 @@ PointSummary point_with(double steady, double undetermined) {
   return p;
 }
 
-// Misreading: runs judged "undetermined" (short records) counted as not steady.
+// Misreading: counting runs judged "undetermined" (short records) as not steady.
 TEST(MapRules, SignRuleCountsUndecidedPointsApart) {
   SweepSummary s;
   s.per_point = {point_with(0.0, 1.0), point_with(0.8, 0.2), point_with(0.0, 0.0),

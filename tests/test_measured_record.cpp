@@ -1,5 +1,5 @@
-// The measured-record reader: units, gauge pressures, renamed columns and every bad input of
-// issue 13 named by file and line.
+// The measured-record reader: units, gauge pressures, renamed columns, and every bad input
+// named by file and line.
 
 #include <gtest/gtest.h>
 

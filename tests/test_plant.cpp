@@ -94,7 +94,7 @@ TEST(Plant, SteadyMeterOutSpeedMatchesChokedFlowBalance) {
   const double P1 = r.series.channel("P1").values[i];
   const double P2 = r.series.channel("P2").values[i];
   ASSERT_GT(P2 * s.valve.critical_ratio, s.ambient_pressure_Pa);  // exhaust is choked
-  // Settled to far better than the 1 % the issue asks; 1e-4 leaves room for the last decay.
+  // Settled to far better than 1 %; 1e-4 leaves room for the last decay.
   EXPECT_NEAR(v / v_expected, 1.0, 1e-4);
   const double Pa = s.ambient_pressure_Pa;
   const double friction = s.friction.curve.coulomb_N + s.friction.curve.viscous_Ns_per_m * v;
@@ -163,8 +163,8 @@ TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
 
 // The default rig's guide has a Stribeck exponent of 0.5, whose slope is infinite at rest:
 // the Jacobian there takes the columns of difference quotients (docs/model.md, "Friction"),
-// finite, and the stiff stepper runs the default rig from rest. Before, its first Jacobian
-// was NaN and Rosenbrock 4 failed at t = 0 with "step size underflow".
+// finite, and the stiff stepper runs the default rig from rest (a NaN Jacobian would make
+// Rosenbrock 4 fail at t = 0 with "step size underflow").
 TEST(Plant, JacobianIsFiniteAtRestWhereTheStribeckSlopeIsInfinite) {
   const Scenario s = default_scenario();
   ASSERT_EQ(s.load.guide_friction.curve.stribeck_exponent, 0.5);
@@ -205,7 +205,7 @@ Scenario without_quasi_static(Scenario s) {
   return s;
 }
 
-// The LuGre rig (the default before issue 12) at S2 for `seconds`: the full bristle equation
+// The frozen LuGre rig (tests/variant_scenarios.hpp) at S2 for `seconds`: the full bristle equation
 // at tight tolerances (the reference) and at the default ones, and the rig as it is
 // (quasi-static limit on).
 struct QuasiStaticRuns {
@@ -224,7 +224,7 @@ TEST(Plant, LuGreQuasiStaticLimitMatchesTheBristleEquationWhileSlidingFast) {
     const auto [full, full_default, limit] = quasi_static_runs(S2_mm2, 2.0);
     ASSERT_TRUE(full.summary.ok() && full_default.summary.ok() && limit.summary.ok());
     EXPECT_LT(largest_velocity_difference(limit, full), 1e-7 * 0.8) << "S2 " << S2_mm2;
-    // The limit was used: the bristles no longer bound the step.
+    // The limit was used: the bristles do not bound the step.
     EXPECT_LT(2 * limit.summary.rhs_evaluations, full_default.summary.rhs_evaluations)
         << "S2 " << S2_mm2;
   }

@@ -29,7 +29,7 @@ TEST(Regime, SineSineWithNoiseAndWhiteNoiseAreNeverChaotic) {
   const AnalysisResult n = analyze_series(white_noise(10000), 1000.0);
   EXPECT_FALSE(n.verdict.chaotic);
   // Wolf's program reads white noise at ~300 /s (as docs/notes/analysis.md notes of the
-  // peers); it is no longer run on a record whose neighbours predict no better than a linear rule.
+  // peers); it is not run on a record whose neighbours predict no better than a linear rule.
   EXPECT_FALSE(n.wolf_run);
   EXPECT_NE(n.wolf_status.find("not run: no deterministic structure"), std::string::npos);
   EXPECT_GE(n.prediction.ratio(), 1.0);
@@ -45,13 +45,13 @@ TEST(Regime, ChaoticReferencesAreChaotic) {
 }
 
 TEST(Regime, PhaseCoherentChaosIsChaotic) {
-  // Rossler's autocorrelation barely decays within the record; it no longer vetoes: the
+  // Rossler's autocorrelation barely decays within the record; it does not veto chaos: the
   // exponent, the 0-1 test and the prediction errors decide (docs/notes/analysis.md).
   const AnalysisResult r = analyze_series(rossler_x(10000), 10.0);
   EXPECT_TRUE(r.verdict.chaotic);
   EXPECT_EQ(r.verdict.regime, Regime::kChaotic);
   EXPECT_GT(r.divergence.lambda_per_s, 3.0 * r.divergence.uncertainty_per_s);
-  EXPECT_GT(r.evidence.late_acf, 0.5);  // the old veto's criterion would still fire
+  EXPECT_GT(r.evidence.late_acf, 0.5);  // a late-ACF veto would fire
 }
 
 TEST(Regime, ShortLorenzIsNeverPeriodic) {
@@ -216,8 +216,8 @@ TEST(Regime, TooShortOrNonFiniteSeriesIsAnError) {
   EXPECT_EQ(few.verdict.regime, Regime::kUndetermined);  // below VerdictOptions::min_samples
 }
 
-// Issue 33: with no linear region there is no exponent, so its uncertainty is null too (it was
-// the spread of placeholder zeros).
+// With no linear region there is no exponent, so its uncertainty is null too, whatever the
+// estimator left in the fields (not the spread of placeholder zeros).
 TEST(Regime, NoDivergenceValueMeansNoUncertainty) {
   std::vector<double> damped(10000);
   for (std::size_t i = 0; i < damped.size(); ++i) {
@@ -265,7 +265,8 @@ RegimeEvidence deterministic_evidence(double K, double q25, double q75) {
   return e;
 }
 
-// Issue 33: the determinism line said "below all N IAAFT surrogates" whatever the rank.
+// The determinism line states where the record ranks among the surrogates: above all, above
+// some, or below all; "below all N IAAFT surrogates" only when it is.
 TEST(Regime, SurrogateEvidenceSaysWhereTheRecordRanks) {
   RegimeEvidence e = irregular_evidence();
   e.surrogate_rank = 39;  // every surrogate below the record: less predictable than all
@@ -284,7 +285,8 @@ TEST(Regime, SurrogateEvidenceSaysWhereTheRecordRanks) {
             std::string::npos);
 }
 
-// Issue 33: "stochastic" on a noise-free simulated run read as a claim about its source.
+// "Stochastic" says what it means: no claim that the source is random (a noise-free simulated
+// run can earn it).
 TEST(Regime, StochasticSaysWhatItMeans) {
   RegimeEvidence e = irregular_evidence();
   e.surrogate_rank = 20;
@@ -293,7 +295,7 @@ TEST(Regime, StochasticSaysWhatItMeans) {
   EXPECT_NE(evidence_text(v).find("it does not say the source is random"), std::string::npos);
 }
 
-// Issue 34: a sharp relaxation oscillator repeats itself over 90 % of its record while the 0-1
+// A sharp relaxation oscillator repeats itself over 90 % of its record while the 0-1
 // test, misled by its sharp edges, reads K = 0.93; without a positive exponent a record that
 // repeats itself is periodic whatever K says.
 TEST(Regime, RepeatingRecordWithoutExponentIsPeriodicWhateverTheZeroOneTest) {
@@ -313,10 +315,10 @@ TEST(Regime, RepeatingRecordWithoutExponentIsPeriodicWhateverTheZeroOneTest) {
   EXPECT_EQ(decide_regime(e).regime, Regime::kChaotic);
 }
 
-// Issue 34: an Ornstein-Uhlenbeck record sampled at 1 kHz leaves the 0-1 test 28 points after
-// down-sampling, and "stochastic" required it: undetermined. The surrogates keep the linear
-// null, the predictor finds nothing, the spectrum is broadband and the autocorrelation dies:
-// stochastic from the other evidence.
+// An Ornstein-Uhlenbeck record sampled at 1 kHz leaves the 0-1 test 28 points after
+// down-sampling, too few to run. The surrogates keep the linear null, the predictor finds
+// nothing, the spectrum is broadband and the autocorrelation dies: stochastic from that other
+// evidence, not undetermined for want of the 0-1 test.
 TEST(Regime, StochasticWithoutTheZeroOneTestFromTheOtherEvidence) {
   RegimeEvidence e = irregular_evidence();
   e.zero_one_run = false;
@@ -333,9 +335,9 @@ TEST(Regime, StochasticWithoutTheZeroOneTestFromTheOtherEvidence) {
   EXPECT_NE(decide_regime(e).regime, Regime::kStochastic);
 }
 
-// Issue 34: dysts's BurkeShaw, Qi and WangSun are deterministic (below every surrogate), the
-// 0-1 test reads K ~ 1, and their divergence curves rise all along without one straight
-// stretch: undetermined, though everything says chaos. The rise counts where the spectrum is
+// dysts's BurkeShaw, Qi and WangSun are deterministic (below every surrogate), the 0-1 test
+// reads K ~ 1, and their divergence curves rise all along without one straight stretch: with
+// no linear region, everything else still says chaos. The rise counts where the spectrum is
 // broadband, the autocorrelation dies and the 0-1 test supports it; not where the record
 // repeats itself (a torus's curve also rises), has the lines and lasting autocorrelation of a
 // noisy cycle, rests like stick-slip, or the 0-1 test reads it regular or did not run.

@@ -137,7 +137,7 @@ TEST(Claims, FollowTheSweepResults) {
 }
 
 // Misreading: the paper says both that Ps 0.30 shrinks the stick-slip region by about 20 % and
-// that it extends it; the old rule scored one reading silently.
+// that it extends it; scoring one reading silently would hide that.
 TEST(Claims, TheContradictionIsShownAndNotScored) {
   ClaimInputs in;
   in.base = map_with(320, 30, 400);
@@ -153,8 +153,8 @@ TEST(Claims, TheContradictionIsShownAndNotScored) {
   }
 }
 
-// Misreading: the exponent row was tied to the whole regime verdict; the paper's claim is that
-// the exponent is positive. They are two rows now.
+// The paper's claim is that the exponent is positive, not the whole regime verdict: the two
+// are separate rows.
 TEST(Claims, ExponentAndVerdictAreSeparateRows) {
   ClaimInputs in;
   in.example_lambda = 3.0;
@@ -224,8 +224,8 @@ TEST(Claims, EveryRowQuotesThePaperAndCarriesItsMargin) {
   }
 }
 
-// Misreading: the paper's m is the total moving mass; the maps added the load to a 1.05 kg
-// piston + rod, so "doubled" was x1.59.
+// The paper's m is the total moving mass: the load levels are set on it, not added to the
+// 1.05 kg piston + rod (which would make "doubled" x1.59).
 TEST(Claims, LoadLevelsAreTotalMovingMass) {
   Scenario s = default_scenario();
   s.set_total_moving_mass(1.5);
@@ -251,7 +251,7 @@ TEST(Claims, Fig2PanelsAreLabelledAsThePapers) {
   EXPECT_LT(a, b);
 }
 
-// An adaptive map's figure marks its inferred points; a full map's figure is as before.
+// An adaptive map's figure marks its inferred points; a full map's figure has no such marks.
 TEST(Report, IncidenceMapMarksInferredPoints) {
   SweepSpec spec;
   spec.axes = {parse_grid_axis("circuit.S1_mm2=2.45:2.50:0.05"),
@@ -276,8 +276,8 @@ TEST(Report, IncidenceMapMarksInferredPoints) {
   EXPECT_NE(adaptive.caption.find("1 of the 4 points were not run"), std::string::npos);
 }
 
-// Figures a person reads (issue 33): the stability map's colour scale is set by the bulk of
-// its values, not by the one extreme that left 87 % of the points near-white.
+// Figures a person reads: the stability map's colour scale is set by the bulk of its values,
+// not by one extreme that would leave most points near-white; the extremes are marked.
 TEST(Figures, StabilityMapScaleFollowsTheBulkAndMarksTheExtremes) {
   StabilityMap m;
   m.axes = {parse_grid_axis("circuit.S1_mm2=2.45:2.5:0.05"),
@@ -290,7 +290,7 @@ TEST(Figures, StabilityMapScaleFollowsTheBulkAndMarksTheExtremes) {
     m.points.push_back(p);
   }
   const double scale = stability_colour_scale(m);
-  EXPECT_LT(scale, 10.0);  // the old scale: 265
+  EXPECT_LT(scale, 10.0);  // the extreme's own scale: 265
   EXPECT_GE(scale, 3.0);
   const FigureSpec f = stability_map_figure(m);
   EXPECT_NE(f.plot.find(fmt::format("set cbrange [-{0}:{0}]", scale)), std::string::npos);
@@ -298,8 +298,8 @@ TEST(Figures, StabilityMapScaleFollowsTheBulkAndMarksTheExtremes) {
   EXPECT_NE(f.caption.find("the 2 points beyond it"), std::string::npos) << f.caption;
 }
 
-// Fig. 7b's exponent panel holds where both running estimates settle (Wolf's was clipped at
-// three times the model's last value), and Figs. 3 and 7b keep their legends off the curves.
+// Fig. 7b's exponent panel holds where both running estimates settle (Wolf's is not clipped at
+// a multiple of the model's last value), and Figs. 3 and 7b keep their legends off the curves.
 TEST(Figures, ExponentPanelHoldsBothEstimatesAndLegendsStayOffTheCurves) {
   const std::vector<double> wolf = {40, 9, 6, 5, 4.8, 4.6, 4.5, 4.4};
   const std::vector<double> model = {30, 3, 1.5, 1.2, 1.1, 1.0, 0.9, 1.0};

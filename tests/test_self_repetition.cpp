@@ -160,14 +160,14 @@ TEST(SelfRepetition, VetoComparesTheGrowthWithTheClaimedExponent) {
   const Verdict vetoed = decide_regime(e);
   EXPECT_FALSE(vetoed.chaotic);
   // Repeating over 80 % of the record with no exponential divergence left: periodic whatever
-  // the 0-1 test's K (issue 34; it was undetermined, K being high).
+  // the 0-1 test's K (here high), not undetermined.
   EXPECT_EQ(vetoed.regime, Regime::kPeriodic);
   e.repetition.growth_per_s = 2.5;  // grows as fast as a chaotic near-return would
   EXPECT_TRUE(decide_regime(e).chaotic);
 }
 
-// Issue 11's example of a false positive on the virtual rig (the rig that was the default then,
-// docs/variants/frozen_light_piston.toml): 3.0 kg, S1 3.60, S2 0.35 mm^2, whose velocity
+// A record the divergence alone would call chaotic on the frozen light-piston rig
+// (docs/variants/frozen_light_piston.toml): 3.0 kg, S1 3.60, S2 0.35 mm^2, whose velocity
 // envelope repeats; the model's own exponent is 0 within its error.
 TEST(SelfRepetition, RigFalsePositiveIsNoLongerChaotic) {
   const Scenario s = frozen_light_piston(

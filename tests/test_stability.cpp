@@ -60,11 +60,12 @@ TEST(Equilibrium, NoSteadyMotionIsAResultWithAReason) {
   EXPECT_FALSE(s.reason.empty());
 }
 
-// Issue 16 finding 2: an exhaust far wider than the supply (or a supply all but shut) made
-// the chamber-1 balance unbracketable and ended in an internal error (exit 70).
+// An exhaust far wider than the supply (or a supply all but shut) leaves the chamber-1
+// balance unbracketable: the result says so and names both keys, not an internal error
+// (exit 70).
 TEST(Equilibrium, ExhaustTooWideForTheSupplyIsAResultNamingBothKeys) {
-  // An exhaust of 1e10 mm^2 is beyond the key's plausible range (issue 33), so it is set on
-  // the scenario itself: the equilibrium search must still answer, not fail.
+  // An exhaust of 1e10 mm^2 is beyond the key's plausible range (refused as input), so it is
+  // set on the scenario itself: the equilibrium search must still answer, not fail.
   Scenario wide = scenario({});
   wide.circuit.S2_m2 = 1e4;
   for (const Scenario& s : {wide, scenario({"circuit.S1_mm2=1e-12"})}) {

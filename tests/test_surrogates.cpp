@@ -175,7 +175,7 @@ TEST(Evidence, TooShortForTheTestsSaysSoAndDegradesWithoutNaN) {
 // and a noise-driven nonlinear oscillator beats them always; both are forecast about as well
 // by the linear predictor as by the local-constant one, so the surrogate rejection alone must
 // not make them deterministic (the blind records of docs/notes/analysis.md: a noise-driven linear
-// oscillator at 5,000 samples and van der Pol with dynamic noise were called chaotic).
+// oscillator at 5,000 samples and van der Pol with dynamic noise, which that alone calls chaotic).
 TEST(Verdict, SurrogateRejectionAloneDoesNotMakeALinearRecordChaotic) {
   RegimeEvidence e;
   e.samples = 5000;

@@ -179,8 +179,8 @@ TEST(Sweep, ATrailingSlashOnTheDirectoryStillCutsTheTornLine) {
   o.out_dir = part + "/";
   o.resume = true;
   run_sweep(spec, o);
-  // Before the fix the torn tail stayed and the next record was glued to it: this second
-  // resume then failed on a line with too many fields.
+  // The torn tail is cut, not kept with the next record glued to it: this second resume
+  // reads every line with the right number of fields.
   EXPECT_NO_THROW(run_sweep(spec, o));
   EXPECT_EQ(slurp(full + "/runs.csv"), slurp(part + "/runs.csv"));
   std::filesystem::remove_all(full);
@@ -286,7 +286,7 @@ TEST(Sweep, ARecordWithTheModelExponentRoundTrips) {
 }
 
 // The record's columns come from one table (run_record.cpp); the header and a full record are
-// pinned to the text runs.csv and journals have always had, so files written before read back.
+// pinned to the text runs.csv and journals are written in, so files from any build read back.
 TEST(Sweep, TheRecordsCsvFormIsUnchanged) {
   EXPECT_EQ(RunRecord::csv_header(),
             "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
@@ -336,7 +336,7 @@ SweepSpec model_exponent_spec(const std::vector<std::string>& sets, const std::s
 }
 
 TEST(Sweep, ModelExponentPerRunIsThePlantsOwnOverTheRun) {
-  // The frozen LuGre rig (the default before issue 12): stick-slip at S2 0.05, chaotic beyond
+  // The frozen LuGre rig (tests/variant_scenarios.hpp): stick-slip at S2 0.05, chaotic beyond
   // 3 sigma at 0.35 over 6 s, so both outcomes of the incidence are exercised.
   const SweepSpec spec = model_exponent_spec({"run.duration_s=7"},
                                              "circuit.S2_mm2=0.05:0.35:0.30",

@@ -43,8 +43,9 @@ TEST_P(FlowLawTest, ContinuousAtCriticalRatioAndLaminarJunction) {
   EXPECT_NEAR(flow_function(law, gas, b - eps), flow_function(law, gas, b + eps), 1e-6);
   const double r = law.laminar_ratio;
   EXPECT_NEAR(flow_function(law, gas, r - eps), flow_function(law, gas, r + eps), 1e-6);
-  // The slope is continuous too: the junction is no kink (the old linear branch was twice as
-  // steep as the ellipse there). Slopes over 1e-6 on either side agree to 1e-3 of their size.
+  // The slope is continuous too: the junction is no kink (a linear branch matched in value
+  // only would be twice as steep as the ellipse there). Slopes over 1e-6 on either side agree
+  // to 1e-3 of their size.
   const auto slope = [&](double from, double to) {
     return (flow_function(law, gas, to) - flow_function(law, gas, from)) / (to - from);
   };

@@ -1,7 +1,8 @@
 // The virtual rig's acceptance (docs/notes/virtual_rig.md holds the evidence around these numbers).
-// Issue 5's, on the rig it was built for (volumes frozen at 420 mm, 0.53 kg, LuGre seal:
-// docs/variants/frozen_light_piston.toml), so that a later change cannot silently lose that
-// mechanism; issue 12's, pinned on the DEFAULT (volumes following the piston over 500 mm).
+// The chaos of the frozen light-piston rig (volumes frozen at 420 mm, 0.53 kg, LuGre seal:
+// docs/variants/frozen_light_piston.toml), pinned so that no change can silently lose that
+// mechanism; and the paper's chaotic point on the DEFAULT rig (volumes following the piston
+// over 500 mm).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,7 +31,7 @@ TEST(VirtualRig, DefaultIsThePapersChaoticPointWithAMovingPiston) {
   EXPECT_DOUBLE_EQ(s.circuit.S2(), 0.35e-6);
   EXPECT_DOUBLE_EQ(s.supply_gauge_Pa, 0.25e6);
   EXPECT_DOUBLE_EQ(s.load.mass_kg, 1.5);
-  // Issue 12: no frozen position; the piston + rod as heavy as the 500 mm stroke makes them.
+  // No frozen position; the piston + rod as heavy as the 500 mm stroke makes them.
   EXPECT_FALSE(s.cylinder.volumes_frozen());
   EXPECT_DOUBLE_EQ(s.cylinder.stroke_m, 0.500);
   EXPECT_NEAR(s.load.piston_mass_kg, 0.26 + 1.58 * s.cylinder.stroke_m, 0.01);
@@ -71,7 +72,8 @@ TEST(VirtualRig, DefaultRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel)
 // chaos (docs/model.md, "Valves"): at a stationary chaotic point of the default rig (volumes
 // frozen at 420 mm, S2 0.50 mm^2, where the supply valve runs at r ~ 0.994 and the exponent is
 // resolvable) moving the junction from 0.995 to 0.9995 leaves the model's exponent within its
-// uncertainty. With the earlier branch, matched in value only, the junction was a kink.
+// uncertainty. The patch matches the turbulent branch in value and slope: no kink at the
+// junction.
 TEST(VirtualRig, LaminarPatchWidthDoesNotDecideTheExponent) {
   Scenario s = default_scenario();
   s.cylinder.frozen_position_m = 0.420;

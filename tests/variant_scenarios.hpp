@@ -14,7 +14,7 @@ inline Scenario variant_scenario(const std::string& name,
   return build_scenario(std::string(PNEUMACHAOS_VARIANTS_DIR) + "/" + name, sets);
 }
 
-/// The default before issue 12: volumes frozen at 420 mm, 0.53 kg piston + rod, LuGre seal,
+/// The frozen light-piston rig: volumes frozen at 420 mm, 0.53 kg piston + rod, LuGre seal,
 /// chaotic at the Fig. 7 point (docs/variants/frozen_light_piston.toml).
 inline Scenario frozen_light_piston(const std::vector<std::string>& sets = {}) {
   return variant_scenario("frozen_light_piston.toml", sets);

@@ -174,12 +174,15 @@ std::string wrapped(const std::string& text, std::size_t width, const std::strin
 // One line of the verdict's evidence; the verdict's whole rule (a paragraph) only when asked,
 // wrapped, else a pointer to it.
 std::string evidence_line(const std::string& line, bool explain) {
+  // Characters per line of the wrapped rule before its six-space indent: 98 in all, so the
+  // paragraph fits a 100-column terminal.
+  constexpr std::size_t kRuleWidth = 92;
   static const std::string rule = "[--] rule: ";
   if (!line.starts_with(rule)) return "  " + line + "\n";
   if (!explain)
     return "  [--] rule: the rule that combines these lines is printed by --explain (and held "
            "in the JSON's verdict evidence)\n";
-  return "  [--] rule:\n" + wrapped(line.substr(rule.size()), 92, "      ");
+  return "  [--] rule:\n" + wrapped(line.substr(rule.size()), kRuleWidth, "      ");
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ namespace {
 SeededTestSetup run_evidence_tests(std::span<const double> x, const AnalysisOptions& o,
                                    AnalysisResult& r) {
   const double period = smoothed_period(x, r.delay.delay);
-  const auto quarter = static_cast<std::size_t>(std::lround(period / 4.0));
+  const auto quarter = static_cast<std::size_t>(std::lround(period * kDelayShareOfOrbit));
   SeededTestSetup setup;
   setup.zero_one_step = std::clamp<std::size_t>(quarter, 1, r.delay.delay);
   ZeroOneOptions z = o.zero_one;
@@ -54,7 +54,10 @@ SeededTestSetup run_evidence_tests(std::span<const double> x, const AnalysisOpti
 // signature of linear noise (docs/notes/analysis.md "Wolf's status").
 void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
               AnalysisResult& r) {
-  if (r.prediction.computed && r.prediction.ratio() >= 1.0) {
+  // For a linear Gaussian process the linear predictor is optimal: a local-constant error at
+  // or above the linear one means no nonlinear structure (docs/notes/analysis.md "Determinism").
+  constexpr double kLinearNoiseRatio = 1.0;
+  if (r.prediction.computed && r.prediction.ratio() >= kLinearNoiseRatio) {
     r.wolf_status = fmt::format(
         "not run: no deterministic structure (local-constant prediction error {:.3g} >= linear "
         "{:.3g}); an exponent is not defined for noise",
@@ -84,19 +87,23 @@ void note_lines(AnalysisResult& r) {
 }  // namespace
 
 void AnalysisOptions::validate() const {
+  // The upper end of the range AnalysisOptions::verdict_seeds documents (odd, 1 to 99).
+  constexpr std::size_t kMaxVerdictSeeds = 99;
   zero_one.validate();
   surrogates.validate();
   verdict.validate();
-  if (verdict_seeds < 1 || verdict_seeds > 99 || verdict_seeds % 2 == 0) {
+  if (verdict_seeds < 1 || verdict_seeds > kMaxVerdictSeeds || verdict_seeds % 2 == 0) {
     throw Error(kVerdictSeedsField,
-                fmt::format("must be odd, from 1 to 99 (a majority must exist), got {}",
-                            verdict_seeds));
+                fmt::format("must be odd, from 1 to {} (a majority must exist), got {}",
+                            kMaxVerdictSeeds, verdict_seeds));
   }
 }
 
 namespace {
 
 void check_record(std::span<const double> x, double rate_Hz) {
+  // analyze()'s documented minimum (analyze.hpp), above the exponents' own
+  // kMinExponentSamples: shorter records are refused before any estimator runs.
   constexpr std::size_t kMinSamples = 200;
   if (x.size() < kMinSamples) {
     throw Error("analyze", fmt::format("{} samples is too short to analyse: at least {} are needed",
@@ -198,8 +205,8 @@ void describe_divergence(double rate_Hz, const AnalysisOptions& o, AnalysisResul
 
 // The orbit's scales for the divergence curve and the self-repetition windows. Under a
 // resolved noise floor the maxima are counted above the noise (mean_maxima_spacing with its
-// sd): the noise's own wiggles made a rig's noisy cycle of 67 ms read 21 ms, its divergence
-// curve was read over a third of an orbit and its windows no longer repeated
+// sd): counted on the raw record, the noise's own wiggles make a rig's noisy cycle of 67 ms read
+// 21 ms, its divergence curve is read over a third of an orbit and its windows do not repeat
 // (docs/notes/analysis.md "Noise floor"). The embedding and the 0-1 test keep the clean count.
 struct OrbitScales {
   double maxima_spacing = 0.0, period = 0.0;

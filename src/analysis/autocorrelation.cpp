@@ -10,6 +10,27 @@
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
+namespace {
+
+// Fewest samples accepted (the header's contract).
+constexpr std::size_t kMinSamples = 16;
+
+// Lags computed by default: up to N / kLagShare (the header's "default N/4"); the biased
+// estimator shrinks r at lag k by (N - k) / N, a quarter at most there.
+constexpr std::size_t kLagShare = 4;
+
+// The envelope's maxima are kept while they exceed kNoiseBandWidth / sqrt(N), the approximate
+// 95 % band of a white-noise autocorrelation (Bartlett 1946: sd 1/sqrt(N)).
+constexpr double kNoiseBandWidth = 2.0;
+
+// Fewest envelope maxima a decay rate is fitted to: two points always fit a line.
+constexpr double kMinEnvelopePoints = 3.0;
+
+// The late envelope averages |r| over lags N / kLateStartShare .. N / kLagShare
+// (Autocorrelation::late_envelope: "lags N/8 .. N/4").
+constexpr std::size_t kLateStartShare = 8;
+
+}  // namespace
 
 std::vector<double> centred_lag_products(std::span<const double> x) {
   const std::size_t n = x.size();
@@ -28,8 +49,11 @@ std::vector<double> centred_lag_products(std::span<const double> x) {
 
 Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::size_t max_lag) {
   const std::size_t n = x.size();
-  if (n < 16) throw Error("autocorrelation", fmt::format("{} samples: at least 16 are needed", n));
-  if (max_lag == 0 || max_lag >= n) max_lag = n / 4;
+  if (n < kMinSamples) {
+    throw Error("autocorrelation",
+                fmt::format("{} samples: at least {} are needed", n, kMinSamples));
+  }
+  if (max_lag == 0 || max_lag >= n) max_lag = n / kLagShare;
   Autocorrelation a;
   a.lag_products = centred_lag_products(x);
   const std::vector<double>& raw = a.lag_products;
@@ -51,7 +75,7 @@ Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::
       env.push_back(m);
     }
   }
-  const double noise = 2.0 / std::sqrt(static_cast<double>(n));
+  const double noise = kNoiseBandWidth / std::sqrt(static_cast<double>(n));
   double st = 0, sl = 0, stt = 0, stl = 0, count = 0;
   for (std::size_t i = 0; i < env.size() && env[i] > noise; ++i) {
     const double l = std::log(env[i]);
@@ -61,12 +85,12 @@ Autocorrelation autocorrelation(std::span<const double> x, double rate_Hz, std::
     stl += lag[i] * l;
     ++count;
   }
-  if (count >= 3 && count * stt - st * st > 0) {
+  if (count >= kMinEnvelopePoints && count * stt - st * st > 0) {
     a.envelope_decay_per_s = std::max(0.0, -(count * stl - st * sl) / (count * stt - st * st));
   }
   double late = 0.0;
   std::size_t late_count = 0;
-  for (std::size_t k = n / 8; k <= std::min(max_lag, n / 4); ++k) {
+  for (std::size_t k = n / kLateStartShare; k <= std::min(max_lag, n / kLagShare); ++k) {
     late += std::abs(a.r[k]);
     ++late_count;
   }

@@ -11,6 +11,13 @@ namespace pneumachaos {
 
 namespace {
 
+// Samples a cubic interpolation reads: base - 1 .. base + 2.
+constexpr std::size_t kCubicStencil = 4;
+
+// Newton steps towards the closest approach: the first from the sample itself, the second
+// from the interpolated point it reaches.
+constexpr int kNewtonSteps = 2;
+
 [[noreturn, gnu::noinline]] void too_short(std::size_t n, std::size_t needed) {
   throw Error("interpolation", fmt::format("{} samples: at least {} are needed", n, needed));
 }
@@ -29,7 +36,7 @@ std::size_t stencil_start(double t, std::size_t n, std::size_t needed) {
 // replacement, 18 interpolations each, and the calls cost a sixth of a 1e6-sample analysis
 // (docs/notes/performance.md). The arithmetic is the same.
 inline double cubic_at(std::span<const double> x, double t) {
-  const std::size_t s = stencil_start(t, x.size(), 4);
+  const std::size_t s = stencil_start(t, x.size(), kCubicStencil);
   const double u = t - static_cast<double>(s + 1);
   const double p0 = x[s], p1 = x[s + 1], p2 = x[s + 2], p3 = x[s + 3];
   return p1 + 0.5 * u *
@@ -50,7 +57,7 @@ std::span<const double> shifted_series(std::span<const double> x, std::size_t j,
   // t = j + s = base + u; Lagrange weights of the cubic through base-1..base+2, the stencil
   // kept inside the record (u then lies in [-1, 2), still interpolating or exact at a node).
   const double t = static_cast<double>(j) + s;
-  const std::size_t start = stencil_start(t, x.size(), count + 3);
+  const std::size_t start = stencil_start(t, x.size(), count + kCubicStencil - 1);
   const double u = t - static_cast<double>(start + 1);
   const double w0 = -u * (u - 1.0) * (u - 2.0) / 6.0;
   const double w1 = (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0;
@@ -104,9 +111,9 @@ NewtonSums newton_sums_at_sample(const DelayEmbedding& e, std::size_t i, std::si
 
 double closest_offset(const DelayEmbedding& e, std::size_t i, std::size_t j) {
   const std::size_t last = j + (e.dimension() - 1) * e.delay();
-  const bool inside = j >= 2 && last + 4 <= e.series().size();
+  const bool inside = j >= 2 && last + kCubicStencil <= e.series().size();
   double s = 0.0;
-  for (int iteration = 0; iteration < 2; ++iteration) {
+  for (int iteration = 0; iteration < kNewtonSteps; ++iteration) {
     const NewtonSums n = iteration == 0 && inside ? newton_sums_at_sample(e, i, j)
                                                   : newton_sums(e, i, static_cast<double>(j) + s);
     if (n.den <= 0.0) break;

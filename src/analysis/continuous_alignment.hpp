@@ -33,7 +33,12 @@ double distance2_to(const DelayEmbedding& e, std::size_t i, double j_plus_s);
 std::span<const double> shifted_series(std::span<const double> x, std::size_t j, double s,
                                        std::size_t count, std::vector<double>& buffer);
 
+/// Smallest delay of an oversampled flow, whose values between samples are meaningful; maps and
+/// barely sampled records have none (docs/notes/analysis.md "Continuous-time alignment":
+/// "delay >= 3").
+inline constexpr std::size_t kMinFlowDelay = 3;
+
 /// Whether a record with this delay is treated as an oversampled flow (alignment applies).
-inline bool is_oversampled_flow(std::size_t delay) { return delay >= 3; }
+inline bool is_oversampled_flow(std::size_t delay) { return delay >= kMinFlowDelay; }
 
 }  // namespace pneumachaos

@@ -58,11 +58,14 @@ struct ValueOrder {
 
 const ValueOrder& value_order(std::span<const double> x) {
   thread_local ValueOrder memo;
-  std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a over the values' bit patterns
+  // FNV-1a over the values' bit patterns (Fowler, Noll & Vo): its 64-bit offset basis and prime.
+  constexpr std::uint64_t kFnvOffsetBasis = 1469598103934665603ULL;
+  constexpr std::uint64_t kFnvPrime = 1099511628211ULL;
+  std::uint64_t hash = kFnvOffsetBasis;
   for (double v : x) {
     std::uint64_t bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
-    hash = (hash ^ bits) * 1099511628211ULL;
+    hash = (hash ^ bits) * kFnvPrime;
   }
   if (memo.data == x.data() && memo.size == x.size() && memo.hash == hash) return memo;
   std::vector<std::pair<double, std::size_t>> v(x.size());
@@ -90,8 +93,8 @@ const ValueOrder& value_order(std::span<const double> x) {
 // Vectors 0 .. points-1 in lexicographic order of their coordinates, equal vectors by time,
 // for a series with repeats. A stable counting sort by each coordinate's value rank, last
 // coordinate first: the same order as comparing whole vectors (and then indices), in
-// dimension x (N + distinct values) steps. The comparison sort it replaces was 2.5 % of a
-// sweep, whose records rest (docs/notes/performance.md, "Neighbour search").
+// dimension x (N + distinct values) steps. A comparison sort costs 2.5 % of a sweep, whose
+// records rest (docs/notes/performance.md, "Neighbour search").
 std::vector<std::size_t> lexicographic_order(const DelayEmbedding& e, std::size_t points) {
   const ValueOrder& values = value_order(e.series());
   std::vector<std::size_t> order(points), next(points);
@@ -292,7 +295,10 @@ NeighbourIndex::NeighbourIndex(const DelayEmbedding& embedding, std::size_t poin
           embedding, points == 0 ? embedding.size() : std::min(points, embedding.size()),
           resolution)) {}
 
-double repeat_resolution(std::span<const double> x) { return 1e-9 * standard_deviation(x); }
+double repeat_resolution(std::span<const double> x) {
+  constexpr double kRepeatShareOfSd = 1e-9;  // the header's contract: see repeat_resolution
+  return kRepeatShareOfSd * standard_deviation(x);
+}
 NeighbourIndex::~NeighbourIndex() = default;
 
 std::size_t NeighbourIndex::size() const { return impl_->points; }

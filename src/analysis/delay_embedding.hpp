@@ -37,6 +37,10 @@ struct Neighbour {
 /// sampled at a whole number of points per period repeats to within 1e-16).
 double repeat_resolution(std::span<const double> x);
 
+/// Fewest samples the largest exponent is estimated from (divergence curve and Wolf alike);
+/// their options' validate() refuses shorter records.
+inline constexpr std::size_t kMinExponentSamples = 100;
+
 /// k-d tree over the first `points` delay vectors of an embedding (all by default).
 class NeighbourIndex {
  public:

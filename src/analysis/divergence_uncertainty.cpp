@@ -30,11 +30,12 @@ std::vector<double> curve_of(const std::vector<std::vector<double>>& sum,
 }
 
 // Student's t, two-sided 95 %, for 1..9 degrees of freedom (any t table, e.g. Abramowitz &
-// Stegun 1964, table 26.10); 1.96 beyond.
+// Stegun 1964, table 26.10); the normal's kNormal95 beyond (the table's values are t's
+// definition, not tuning).
 double t95(std::size_t dof) {
   static constexpr std::array<double, 9> t{12.706, 4.303, 3.182, 2.776, 2.571,
                                            2.447,  2.365, 2.306, 2.262};
-  return dof >= 1 && dof <= t.size() ? t[dof - 1] : 1.96;
+  return dof >= 1 && dof <= t.size() ? t[dof - 1] : kNormal95;
 }
 
 }  // namespace
@@ -64,7 +65,7 @@ SegmentSlopes segment_slopes(const std::vector<std::vector<double>>& sum,
   const double mean = std::accumulate(r.slopes.begin(), r.slopes.end(), 0.0) / n;
   double var = 0.0;
   for (double v : r.slopes) var += (v - mean) * (v - mean);
-  r.standard_error = std::sqrt(var / (n - 1.0) / n) * t95(segments - 1) / 1.96;
+  r.standard_error = std::sqrt(var / (n - 1.0) / n) * t95(segments - 1) / kNormal95;
   return r;
 }
 

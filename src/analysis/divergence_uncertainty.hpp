@@ -7,6 +7,10 @@
 
 namespace pneumachaos::detail {
 
+/// The standard normal's 97.5 % quantile: +-kNormal95 standard errors is a two-sided 95 %
+/// interval (the segments' standard error and the widened uncertainty are scaled to it).
+inline constexpr double kNormal95 = 1.96;
+
 struct SegmentSlopes {
   std::vector<double> slopes;  ///< per step, in record order
   std::size_t without_region = 0;

@@ -6,10 +6,16 @@
 #include <vector>
 
 #include "analysis/linear_region.hpp"
+#include "divergence_uncertainty.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
 namespace {
+
+// The curves at m - 1 and m + 1 follow 1 / kSpreadPairShare of the main curve's reference
+// pairs: a spread, not a second measurement (docs/notes/analysis.md "Divergence exponent's
+// uncertainty").
+constexpr std::size_t kSpreadPairShare = 4;
 
 // A straight stretch gives the same slope on either half; a bending one does not.
 double window_spread(const DivergenceResult& d, double rate_Hz) {
@@ -47,7 +53,7 @@ ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, Diverg
   // A spread, not a second measurement: a quarter of the pairs (dysts's flows: the truth inside
   // the interval on 42 of 54 records, 43 with all of them, at 0.37 G instead of 0.55 G
   // instructions for Lorenz at 1e4 samples; docs/notes/exponent_validation.md).
-  options.max_reference_steps /= 4;
+  options.max_reference_steps /= kSpreadPairShare;
   for (const std::size_t k : {m - 1, m + 1}) {
     if (k < 1) continue;
     options.dimension = k;
@@ -65,8 +71,9 @@ ExponentSpread exponent_spread(std::span<const double> x, double rate_Hz, Diverg
 }
 
 double widened_uncertainty(const DivergenceResult& d, const ExponentSpread& s) {
-  const double window = std::hypot(s.window_per_s, s.window_choice_per_s) / 1.96;
-  return std::hypot(d.uncertainty_per_s, window, s.embedding_per_s / 1.96);
+  using detail::kNormal95;
+  const double window = std::hypot(s.window_per_s, s.window_choice_per_s) / kNormal95;
+  return std::hypot(d.uncertainty_per_s, window, s.embedding_per_s / kNormal95);
 }
 
 }  // namespace pneumachaos

@@ -8,7 +8,7 @@ namespace pneumachaos {
 std::size_t fast_fft_size(std::size_t min_size) {
   for (std::size_t n = std::max<std::size_t>(min_size, 1);; ++n) {
     std::size_t m = n;
-    for (std::size_t p : {2, 3, 5}) {
+    for (std::size_t p : {2, 3, 5}) {  // the radices KissFFT has fast butterflies for
       while (m % p == 0) m /= p;
     }
     if (m == 1) return n;
@@ -19,7 +19,7 @@ namespace {
 
 // Transforms in -> out with one of the last plans made, kept per thread. Making
 // a plan computes n twiddle factors (complex exponentials): in a sweep, where every record has
-// the same length, that was half the cost of the autocorrelation (docs/notes/performance.md).
+// the same length, remaking it costs half of the autocorrelation (docs/notes/performance.md).
 // Plans beyond 2^17 points (1e6-sample records) are made for the call and not kept, so they
 // add nothing to the analysis' peak memory.
 void transform(std::size_t n, bool inverse, const std::complex<double>* in,

@@ -1,8 +1,8 @@
 #pragma once
 // An exact k-d tree whose points are stored in tree order: each node's points are one
 // contiguous block of rows, so building and searching read memory in sequence rather than
-// gathering each coordinate through a permutation (nanoflann's layout). On this machine that
-// gather was half of a whole analysis (docs/notes/performance.md). Internal to the analysis module;
+// gathering each coordinate through a permutation (nanoflann's layout), a gather that costs
+// half of a whole analysis (docs/notes/performance.md). Internal to the analysis module;
 // results are reported through nanoflann's result-set protocol (addPoint, worstDist), and the
 // search prunes with the incremental distance to the cell (Arya & Mount), as nanoflann does.
 
@@ -12,10 +12,13 @@
 
 namespace pneumachaos::detail {
 
+/// Points per leaf: leaves of 8 or 32 are slower (docs/notes/performance.md "Our own k-d tree").
+inline constexpr std::size_t kDefaultLeafSize = 16;
+
 class KdTree {
  public:
   /// `coords`: point k at coords[k * dim .. k * dim + dim); the tree reports k.
-  KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = 16);
+  KdTree(std::vector<double> coords, std::size_t dim, std::size_t leaf_size = kDefaultLeafSize);
 
   /// rank[k]: the place of point k in the tree's storage order (leaf by leaf).
   [[nodiscard]] std::vector<std::size_t> storage_rank() const;

@@ -7,6 +7,25 @@
 #include <utility>
 
 namespace pneumachaos {
+namespace {
+
+// A run holds at least kMinSegments agreeing segments (agreeing_runs' contract: "at least
+// three segments"). The spacing is shrunk so that the curve has at least kMinSegmentsPerCurve
+// segments, one more than a run needs.
+constexpr std::size_t kMinSegments = 3;
+constexpr std::size_t kMinSegmentsPerCurve = 4;
+
+// rising_slopes finds a spread only from this many slopes (its contract: "at least three").
+constexpr std::size_t kMinSlopes = 3;
+
+// rising_slopes reads the curve until it first covers this share of its rise (the header's
+// "90 %": the saturated top is no divergence), and reports these quantiles of the slopes
+// (SlopeSpread: "10 % and 90 % quantiles").
+constexpr double kRiseShare = 0.9;
+constexpr double kLowQuantile = 0.1;
+constexpr double kHighQuantile = 0.9;
+
+}  // namespace
 
 // Least squares by Eigen's QR of the design matrix (1, k): no cancellation of raw sums.
 LineFit fit_line(const std::vector<double>& y, std::size_t first, std::size_t last) {
@@ -31,8 +50,8 @@ LineFit fit_line(const std::vector<double>& y, std::size_t first, std::size_t la
 std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_t spacing,
                                         double tolerance) {
   std::vector<LinearRegion> runs;
-  if (y.size() < 4) return runs;
-  spacing = std::max<std::size_t>(1, std::min(spacing, (y.size() - 1) / 4));
+  if (y.size() < kMinSegmentsPerCurve) return runs;
+  spacing = std::max<std::size_t>(1, std::min(spacing, (y.size() - 1) / kMinSegmentsPerCurve));
   std::vector<std::size_t> at;
   for (std::size_t k = 0; k < y.size(); k += spacing) at.push_back(k);
   std::vector<double> slope(at.size() - 1);
@@ -50,7 +69,7 @@ std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_
       if (!(slope[b] > 0.0) || std::abs(slope[b] - mean) > tolerance * mean) break;
       total += slope[b];
     }
-    if (b - a >= 3) spans.emplace_back(a, b);
+    if (b - a >= kMinSegments) spans.emplace_back(a, b);
   }
   // Only the runs no other run contains (the scan from inside a run mostly ends where it does).
   for (const auto& run : spans) {
@@ -84,22 +103,22 @@ SlopeSpread rising_slopes(const std::vector<double>& y, std::size_t w) {
   SlopeSpread r;
   if (y.size() < 2 || w == 0) return r;
   const double top = *std::max_element(y.begin(), y.end());
-  const double reach = y.front() + 0.9 * (top - y.front());
+  const double reach = y.front() + kRiseShare * (top - y.front());
   std::size_t end = 0;
   while (end < y.size() && y[end] < reach) ++end;
   std::vector<double> slopes;
   for (std::size_t k = 0; k + w <= end && k + w < y.size(); ++k) {
     slopes.push_back((y[k + w] - y[k]) / static_cast<double>(w));
   }
-  if (slopes.size() < 3) return r;
+  if (slopes.size() < kMinSlopes) return r;
   std::sort(slopes.begin(), slopes.end());
   const auto at = [&](double q) {
     return slopes[static_cast<std::size_t>(q * static_cast<double>(slopes.size() - 1) + 0.5)];
   };
   r.found = true;
   r.median = at(0.5);
-  r.low = at(0.1);
-  r.high = at(0.9);
+  r.low = at(kLowQuantile);
+  r.high = at(kHighQuantile);
   return r;
 }
 

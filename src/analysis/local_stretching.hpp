@@ -13,11 +13,11 @@
 namespace pneumachaos {
 
 struct StretchingOptions {
-  std::size_t dimension = 3;
-  std::size_t delay = 1;
-  std::size_t theiler = 1;   ///< temporal neighbours closer than this are skipped
-  std::size_t horizon = 10;  ///< steps over which each pair's separation is followed
-  std::size_t stride = 1;    ///< every stride-th vector is a reference
+  std::size_t dimension = 3;  ///< embedding dimension
+  std::size_t delay = 1;      ///< embedding delay [samples]
+  std::size_t theiler = 1;    ///< temporal neighbours closer than this are skipped
+  std::size_t horizon = 10;   ///< steps over which each pair's separation is followed
+  std::size_t stride = 1;     ///< every stride-th vector is a reference
   /// Throws Error naming the field that is out of range.
   void validate() const;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Natural logarithms of a block of numbers at once: the divergence curve takes ~1.7 million
-// of them on a 1e4 record, and the C library's scalar log was half the curve's time
+// of them on a 1e4 record, and the C library's scalar log takes half the curve's time
 // (docs/notes/performance.md, "Logarithms in blocks").
 
 #include <span>

@@ -8,6 +8,7 @@
 
 #include "divergence_uncertainty.hpp"
 #include "analysis/continuous_alignment.hpp"
+#include "analysis/delay_embedding.hpp"
 #include "analysis/linear_region.hpp"
 #include "log_array.hpp"
 #include "pair_distances.hpp"
@@ -15,10 +16,40 @@
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
+namespace {
+
+// The horizon's default, min(N / kHorizonRecordShare, kHorizonPeriods orbital periods) and at
+// least kMinHorizon steps (DivergenceOptions::horizon; docs/notes/analysis.md, "horizon 8
+// orbital periods"): several orbits for the curve to rise and saturate, capped at a tenth of
+// the record so that the rest holds the references.
+constexpr std::size_t kMinHorizon = 20;
+constexpr std::size_t kHorizonRecordShare = 10;
+constexpr std::size_t kHorizonPeriods = 8;
+
+// Delay vectors a record must have beyond the horizon, margins and Theiler window; with fewer
+// the estimator refuses it (a longer record is needed).
+constexpr std::size_t kMinSpareVectors = 10;
+
+// References are capped by max_reference_steps / horizon, but the cap never falls below this
+// many, however long the horizon.
+constexpr std::size_t kMinReferenceCap = 200;
+
+// Fewest references with a neighbour the curve is averaged over: two per block at the default
+// 10 jackknife blocks.
+constexpr std::size_t kMinReferences = 20;
+
+// The window's sensitivity is measured by trimming one spacing from either end, and only on
+// windows of more than this many spacings, where the trimmed window keeps three.
+constexpr std::size_t kMinSpacingsToTrim = 4;
+
+}  // namespace
 
 void DivergenceOptions::validate(std::size_t n) const {
   if (dimension == 0 || delay == 0) throw Error("lyapunov", "dimension and delay must be >= 1");
-  if (n < 100) throw Error("lyapunov", fmt::format("{} samples: at least 100 are needed", n));
+  if (n < kMinExponentSamples) {
+    throw Error("lyapunov",
+                fmt::format("{} samples: at least {} are needed", n, kMinExponentSamples));
+  }
   if (!(slope_tolerance > 0.0)) throw Error("lyapunov.slope_tolerance", "must be positive");
   if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
   if (segments < 2 || segments > jackknife_blocks) {
@@ -41,10 +72,11 @@ Plan make_plan(std::span<const double> x, const DelayEmbedding& e, const Diverge
   p.period = o.typical_period > 0 ? o.typical_period
                                   : static_cast<std::size_t>(std::lround(mean_maxima_spacing(x)));
   p.K = o.horizon > 0 ? o.horizon
-                      : std::max<std::size_t>(20, std::min(x.size() / 10, 8 * p.period));
+                      : std::max<std::size_t>(kMinHorizon, std::min(x.size() / kHorizonRecordShare,
+                                                                    kHorizonPeriods * p.period));
   // Room for K steps ahead, and for the interpolation stencil around shifted neighbours.
   p.margin = p.aligned ? 2 : 0;
-  if (e.size() <= p.K + 2 * p.margin + o.theiler + 10) {
+  if (e.size() <= p.K + 2 * p.margin + o.theiler + kMinSpareVectors) {
     throw Error("lyapunov", fmt::format("{} samples are too few to follow {} steps with "
                                         "dimension {} and delay {}: a longer record is needed",
                                         x.size(), p.K, o.dimension, o.delay));
@@ -92,7 +124,8 @@ void add_log_distances(std::span<const double> d2, std::span<const double> logs,
 BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const Plan& p,
                        const DivergenceOptions& o) {
   const NeighbourIndex index(e, p.usable, repeat_resolution(x));
-  const std::size_t max_refs = std::max<std::size_t>(200, o.max_reference_steps / (p.K + 1));
+  const std::size_t max_refs =
+      std::max<std::size_t>(kMinReferenceCap, o.max_reference_steps / (p.K + 1));
   const std::size_t span = p.K + 1 + (o.dimension - 1) * o.delay;  // samples one pair reads
   const std::size_t stride = std::max<std::size_t>(1, p.usable / max_refs);
   const std::size_t blocks = o.jackknife_blocks;
@@ -101,7 +134,7 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
   std::vector<std::size_t> references;
   for (std::size_t i = p.margin; i < p.usable; i += stride) references.push_back(i);
   // All neighbours first (searched in the tree's order: docs/notes/performance.md), then the sums
-  // in the references' order, so every sum adds the same terms in the same order as before.
+  // in the references' order, so every sum adds its terms in record order whatever the search's.
   const std::vector<Neighbour> neighbours = index.nearest_each(references, o.theiler);
   std::vector<double> shifted, d2(p.K + 1), logs(p.K + 1);
   for (std::size_t r = 0; r < references.size(); ++r) {
@@ -115,15 +148,15 @@ BlockSums follow_pairs(std::span<const double> x, const DelayEmbedding& e, const
         p.aligned ? shifted_series(x, nb.index, closest_offset(e, i, nb.index), span, shifted)
                   : x.subspan(nb.index, span);
     squared_pair_distances(x.data() + i, other.data(), e.dimension(), o.delay, d2);
-    log_array(d2, logs);  // vectorised: the logarithms were half of the curve's time
+    log_array(d2, logs);  // vectorised: scalar logarithms take half the curve's time
     add_log_distances(d2, logs, bs.sum[b], bs.count[b]);
     ++bs.references;
   }
-  if (bs.references < 20) {
+  if (bs.references < kMinReferences) {
     throw Error("lyapunov", fmt::format("only {} reference points have a neighbour outside the "
-                                        "Theiler window ({} samples); at least 20 are needed: "
+                                        "Theiler window ({} samples); at least {} are needed: "
                                         "a longer record, or a shorter --theiler",
-                                        bs.references, o.theiler));
+                                        bs.references, o.theiler, kMinReferences));
   }
   return bs;
 }
@@ -141,7 +174,7 @@ double slope_uncertainty(const BlockSums& bs, std::size_t spacing, const Diverge
   for (double s : slopes) var += (s - mean) * (s - mean);
   const double jack = std::sqrt(var * (blocks - 1.0) / blocks);
   double window = 0.0;
-  if (r.fit_last - r.fit_first > 4 * spacing) {
+  if (r.fit_last - r.fit_first > kMinSpacingsToTrim * spacing) {
     const double a = fit_line(r.curve, r.fit_first + spacing, r.fit_last).slope;
     const double c = fit_line(r.curve, r.fit_first, r.fit_last - spacing).slope;
     window = 0.5 * std::max(std::abs(a - r.slope_per_step), std::abs(c - r.slope_per_step));

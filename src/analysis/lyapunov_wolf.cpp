@@ -8,14 +8,48 @@
 #include <utility>
 
 #include "analysis/continuous_alignment.hpp"
+#include "analysis/delay_embedding.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
+namespace {
+
+// Evolution interval's default: a quarter of the orbital period (WolfOptions::evolve;
+// docs/notes/analysis.md "evolution 1/4 period").
+constexpr std::size_t kEvolvesPerPeriod = 4;
+
+// Smallest separation's default, as a share of the attractor's diameter (WolfOptions::
+// min_scale): pairs closer than this have collapsed onto one state and carry no direction.
+constexpr double kMinScaleShareOfDiameter = 1e-4;
+
+// A candidate exactly at the search radius must not be lost to the rounding of the tree's
+// squared distances against the separation's square root: the bounded search reaches this
+// far beyond the radius.
+constexpr double kRadiusRounding = 1e-9;
+
+// Without a candidate within the radius, it is widened by doubling up to this factor; beyond
+// it the nearest candidate is taken whatever its orientation, so a replacement stays close.
+constexpr double kMaxRadiusWidening = 8.0;
+
+// Delay vectors a record must have beyond one evolution and the Theiler window.
+constexpr std::size_t kMinSpareVectors = 20;
+
+// The median nearest-neighbour distance that sets the scales is read on about this many
+// reference points spread over the record, not on every sample: a median, not a census.
+constexpr std::size_t kScaleSamples = 300;
+
+// Replacement candidates judged per search: the few dozen nearest points around the fiducial
+// one, among which the best-oriented is chosen.
+constexpr std::size_t kCandidates = 40;
+
+}  // namespace
 
 void WolfOptions::validate(std::size_t n) const {
   if (dimension == 0 || delay == 0) throw Error("wolf", "dimension and delay must be >= 1");
-  if (n < 100) throw Error("wolf", fmt::format("{} samples: at least 100 are needed", n));
+  if (n < kMinExponentSamples) {
+    throw Error("wolf", fmt::format("{} samples: at least {} are needed", n, kMinExponentSamples));
+  }
   if (max_scale < 0.0 || candidate_scale < 0.0 || min_scale < 0.0 || !(scale_factor > 0.0)) {
     throw Error("wolf", "scales must be non-negative and scale_factor positive");
   }
@@ -56,9 +90,9 @@ class WolfGeometry {
       : o_(o),
         e_(x, o.dimension, o.delay),
         period_(typical_period(x, o)),
-        evolve_(o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, period_ / 4)),
+        evolve_(o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, period_ / kEvolvesPerPeriod)),
         diameter_(attractor_diameter(x, o)),
-        min_scale_(o.min_scale > 0.0 ? o.min_scale : 1e-4 * diameter_),
+        min_scale_(o.min_scale > 0.0 ? o.min_scale : kMinScaleShareOfDiameter * diameter_),
         aligned_(o.align && is_oversampled_flow(o.delay)),
         // One sample of margin on each side for the interpolation stencil of aligned neighbours.
         margin_(aligned_ ? 2 : 0),
@@ -106,7 +140,7 @@ class WolfGeometry {
     // there alone: those are the pool's entries that close (the separation is the tree's
     // distance when neighbours are not aligned in time), found by a search bounded by it.
     if (!aligned_) {
-      collect_candidates(fid, old_sep, radius * (1.0 + 1e-9));
+      collect_candidates(fid, old_sep, radius * (1.0 + kRadiusRounding));
       if (const Candidate* best = best_within(radius)) {
         d_out = best->distance;
         return best->time;
@@ -117,7 +151,7 @@ class WolfGeometry {
       d_out = 0.0;
       return -1.0;
     }
-    for (double scale = radius; scale <= 8.0 * radius; scale *= 2.0) {
+    for (double scale = radius; scale <= kMaxRadiusWidening * radius; scale *= 2.0) {
       if (const Candidate* best = best_within(scale)) {
         d_out = best->distance;
         return best->time;
@@ -132,14 +166,17 @@ class WolfGeometry {
 
  private:
   std::size_t checked_usable() const {
-    if (e_.size() < evolve_ + o_.theiler + 20) throw Error("wolf", "the series is too short");
+    if (e_.size() < evolve_ + o_.theiler + kMinSpareVectors) {
+      throw Error("wolf", "the series is too short");
+    }
     return e_.size() - evolve_ - margin_;
   }
 
   // Scales follow the data density: the median nearest-neighbour distance, sampled.
   double median_nn() const {
     std::vector<double> nn;
-    for (std::size_t i = margin_; i < usable_; i += std::max<std::size_t>(1, usable_ / 300)) {
+    const std::size_t stride = std::max<std::size_t>(1, usable_ / kScaleSamples);
+    for (std::size_t i = margin_; i < usable_; i += stride) {
       const Neighbour nb = index_.nearest(i, o_.theiler);
       if (nb.index < usable_) nn.push_back(std::sqrt(nb.distance2));
     }
@@ -170,7 +207,6 @@ class WolfGeometry {
   // (aligned in time for flows) and measured once before its scale and orientation are judged.
   static constexpr double kOpen = std::numeric_limits<double>::infinity();
   void collect_candidates(std::size_t fid, const std::vector<double>* old_sep, double limit) {
-    constexpr std::size_t kCandidates = 40;
     pool_.clear();
     double old_norm = 0.0;
     if (old_sep != nullptr) {
@@ -188,7 +224,7 @@ class WolfGeometry {
       double misalignment = d;  // the first neighbour: simply the nearest
       if (old_sep != nullptr) {
         // The smallest angle to the old separation is the largest cosine: acos is decreasing,
-        // and it was a fifth of a whole analysis of the Henon map, where replacements are frequent.
+        // and costs a fifth of a whole analysis of the Henon map, where replacements are frequent.
         double dot = 0.0;
         for (std::size_t k = 0; k < o_.dimension; ++k) dot += cand_[k] * (*old_sep)[k];
         misalignment = -std::clamp(dot / (d * old_norm), -1.0, 1.0);

@@ -9,8 +9,11 @@
 namespace pneumachaos {
 namespace {
 
-// 1.4826 x MAD is the sd of a normal distribution; the median ignores the few large
-// differences at a record's sharp features (a slip's onset), which a plain sd would count.
+// kMadToSd x MAD is the sd of a normal distribution (1 / Phi^-1(3/4); Hampel 1974); the median
+// ignores the few large differences at a record's sharp features (a slip's onset), which a
+// plain sd would count.
+constexpr double kMadToSd = 1.4826;
+
 double robust_sd(std::vector<double> d) {
   const auto median_of = [](std::vector<double>& v) {
     const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
@@ -19,7 +22,7 @@ double robust_sd(std::vector<double> d) {
   };
   const double m = median_of(d);
   for (double& v : d) v = std::abs(v - m);
-  return 1.4826 * median_of(d);
+  return kMadToSd * median_of(d);
 }
 
 // C(2k, k): the variance gain of the k-th difference of white noise.

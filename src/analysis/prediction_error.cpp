@@ -13,6 +13,16 @@
 namespace pneumachaos {
 namespace {
 
+// The errors are computed only on records with 2 theiler + kNeighbourSlack x neighbours +
+// kMinSpareVectors usable delay vectors: room outside the Theiler window for several times
+// the neighbours averaged, and rows to spare for the linear predictor's least squares.
+constexpr std::size_t kNeighbourSlack = 4;
+constexpr std::size_t kMinSpareVectors = 50;
+
+// The linear predictor uses at most this many delay coordinates: Cao's method searches
+// dimensions up to 8 (choose_dimension's default max_dimension).
+constexpr std::size_t kMaxCoordinates = 8;
+
 std::size_t horizon_of(const PredictionOptions& o) {
   return o.horizon > 0 ? o.horizon : std::max<std::size_t>(1, o.delay);
 }
@@ -20,7 +30,7 @@ std::size_t horizon_of(const PredictionOptions& o) {
 // Delay vectors whose target x[i + (m-1) tau + h] exists; 0 when there are too few.
 std::size_t usable_vectors(std::size_t n, const PredictionOptions& o) {
   const std::size_t reach = (o.dimension - 1) * o.delay + horizon_of(o);
-  const std::size_t needed = 2 * o.theiler + 4 * o.neighbours + 50;
+  const std::size_t needed = 2 * o.theiler + kNeighbourSlack * o.neighbours + kMinSpareVectors;
   return n > reach + needed ? n - reach : 0;
 }
 
@@ -29,7 +39,6 @@ std::size_t usable_vectors(std::size_t n, const PredictionOptions& o) {
 // Solved by Eigen's column-pivoting QR of the design matrix (not the normal equations, which
 // square its condition number); a direction the data do not span gets no weight.
 double linear_error(std::span<const double> x, const PredictionOptions& o, std::size_t usable) {
-  constexpr std::size_t kMaxCoordinates = 8;  // Cao searches d <= 8
   const std::size_t used = std::min(o.dimension, kMaxCoordinates);
   const std::size_t h = horizon_of(o), last = (o.dimension - 1) * o.delay;
   const auto rows = static_cast<Eigen::Index>(usable);

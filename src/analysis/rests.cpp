@@ -11,6 +11,10 @@
 namespace pneumachaos {
 namespace {
 
+// Noise of sd up to the clean band / kCleanBandNoiseShare leaves the clean rule standing
+// (docs/notes/analysis.md "Noise floor": a 12-bit converter's rounding); why, at its use.
+constexpr double kCleanBandNoiseShare = 12.0;
+
 struct RestBounds {
   double level = 0.0;         ///< |x| at most this
   double spread = 0.0;        ///< max - min within a run at most this
@@ -69,7 +73,8 @@ Rests find_rests(std::span<const double> x, const VerdictOptions& o, double reco
   // Noise whose range over a rest (about 6 sigma for ten samples) fits in the clean rule's
   // spread allowance of half the band does not break that rule: the clean rule stands (a
   // 12-bit converter's rounding, a record's last digits).
-  const double noise_sd = record_noise_sd > clean_level / 12.0 ? record_noise_sd : 0.0;
+  const double noise_sd =
+      record_noise_sd > clean_level / kCleanBandNoiseShare ? record_noise_sd : 0.0;
   // Under noise the band is judged on the running mean over a shortest rest, whose noise is
   // sqrt(window) times smaller: a rest's edges, where the body speeds up out of it, then stay
   // outside the run instead of failing its trend test.

@@ -10,6 +10,17 @@
 #include "analysis/series_statistics.hpp"
 
 namespace pneumachaos {
+namespace {
+
+// Constants of the normal distribution: its interquartile range is kIqrToSd standard
+// deviations (2 x 0.6745); from the large-sample variance of a sample q-quantile,
+// q (1 - q) / (n f(x_q)^2), the median's standard error is kMedianSe sd / sqrt(n)
+// (sqrt(pi / 2)) and a quartile's kQuartileSe sd / sqrt(n) (sqrt(0.75 x 0.25) / phi(0.6745)).
+constexpr double kIqrToSd = 1.349;
+constexpr double kMedianSe = 1.2533;
+constexpr double kQuartileSe = 1.3626;
+
+}  // namespace
 
 void note_zero_one(const ZeroOneResult& z, RegimeEvidence& e) {
   e.zero_one_run = z.run;
@@ -43,17 +54,16 @@ double surrogate_flip_probability(const SurrogateTest& s) {
 
 double zero_one_flip_probability(const ZeroOneResult& z, std::size_t frequencies, double split) {
   if (!z.run || frequencies < 2) return 0.0;
-  // The spread of K over the frequencies as a normal's (IQR / 1.349), and the large-sample
-  // standard errors of the median (1.2533 sd / sqrt(n)) and of the upper quartile
-  // (sqrt(0.75 0.25 / n) / phi(0.6745) sd = 1.3626 sd / sqrt(n)).
-  const double sd = (z.K_q75 - z.K_q25) / 1.349;
+  // The spread of K over the frequencies as a normal's (IQR / kIqrToSd), and the large-sample
+  // standard errors of the median and of the upper quartile.
+  const double sd = (z.K_q75 - z.K_q25) / kIqrToSd;
   if (!(sd > 0.0)) return 0.0;
   const double root_n = std::sqrt(static_cast<double>(frequencies));
   const auto tail = [](double distance, double se) {
     return 0.5 * std::erfc(std::abs(distance) / (se * std::sqrt(2.0)));
   };
-  return std::max(tail(z.K - split, 1.2533 * sd / root_n),
-                  tail(z.K_q75 - split, 1.3626 * sd / root_n));
+  return std::max(tail(z.K - split, kMedianSe * sd / root_n),
+                  tail(z.K_q75 - split, kQuartileSe * sd / root_n));
 }
 
 namespace {

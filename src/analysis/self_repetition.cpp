@@ -14,6 +14,17 @@
 namespace pneumachaos {
 namespace {
 
+// The mismatch's growth is a least-squares slope over the stretch's windows: fitted only from
+// kMinFitWindows windows on (two always lie on a line).
+constexpr std::size_t kMinFitWindows = 3;
+
+// Added to the mismatch before its logarithm, so that an exact repeat (mismatch 0) reads
+// ln 1e-12 ~ -27.6, a finite floor, instead of -inf.
+constexpr double kExactRepeatMismatch = 1e-12;
+
+// Fewest samples a repetition is looked for in; shorter records are not run.
+constexpr std::size_t kMinSamples = 4;
+
 // RMS of x[t + L] - x[t] over the overlap t < N - L, relative to the attractor's size
 // sqrt(2 var), for every lag up to max_lag at once: the squares of the two overlapping pieces
 // (prefix sums) minus twice the lag product (one FFT). Normalised per overlap, so long lags
@@ -61,11 +72,11 @@ struct Stretch {
 
 // Least-squares slope of ln(m) against the window index, over m[first .. first + count).
 double log_slope(const std::vector<double>& m, std::size_t first, std::size_t count) {
-  if (count < 3) return 0.0;
+  if (count < kMinFitWindows) return 0.0;
   double st = 0, sl = 0, stt = 0, stl = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const double t = static_cast<double>(k);
-    const double l = std::log(m[first + k] + 1e-12);  // an exact repeat reads 0
+    const double l = std::log(m[first + k] + kExactRepeatMismatch);
     st += t;
     sl += l;
     stt += t * t;
@@ -172,7 +183,7 @@ SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double
   const auto lo = static_cast<std::size_t>(std::ceil(o.min_lag_periods * period_samples));
   const auto needed = static_cast<std::size_t>(std::ceil(o.min_share * static_cast<double>(n)));
   const std::size_t hi = n > needed ? n - needed : 0;
-  if (lo > hi || n < 4) {
+  if (lo > hi || n < kMinSamples) {
     s.reason = fmt::format(
         "not run: {} samples span {:.1f} orbital periods; a repeat {} periods later held over "
         "{:.0f} % of the record needs {:.1f}",

@@ -5,6 +5,15 @@
 #include <numeric>
 
 namespace pneumachaos {
+namespace {
+
+// A maximum counts after a fall of kHysteresisSds standard deviations, or of kNoiseRangeSds
+// sd of a known white noise (its range over about a hundred samples), whichever is larger
+// (docs/notes/analysis.md "Noise floor", Maxima).
+constexpr double kHysteresisSds = 0.25;
+constexpr double kNoiseRangeSds = 6.0;
+
+}  // namespace
 
 double mean_of(std::span<const double> x) {
   return x.empty() ? 0.0 : std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
@@ -21,7 +30,7 @@ std::vector<std::size_t> maxima_indices(std::span<const double> x, double noise_
   // Peaks separated by a fall of at least a quarter standard deviation (hysteresis), so that
   // measurement noise riding on an oscillation does not count as extra maxima; with a known
   // white noise, by at least its range over about a hundred samples (6 sd).
-  const double h = std::max(0.25 * standard_deviation(x), 6.0 * noise_sd);
+  const double h = std::max(kHysteresisSds * standard_deviation(x), kNoiseRangeSds * noise_sd);
   std::vector<std::size_t> peaks;
   bool rising = true;
   double extreme = x.empty() ? 0.0 : x[0];

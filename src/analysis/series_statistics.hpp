@@ -25,7 +25,7 @@ std::vector<double> moving_average(std::span<const double> x, std::size_t width)
 
 /// The orbital period [samples] as the mean maxima spacing of x smoothed over `width` samples
 /// (the embedding delay, about a quarter period): measurement noise and a faster superposed
-/// ripple no longer count as extra maxima (a sine with 20 % noise: 4.7 samples unsmoothed,
+/// ripple do not count as extra maxima (a sine with 20 % noise: 4.7 samples unsmoothed,
 /// its true 100 smoothed; docs/notes/analysis.md "Evidence scale").
 double smoothed_period(std::span<const double> x, std::size_t width);
 

@@ -16,6 +16,17 @@ namespace {
 constexpr std::size_t kLobe = 2;
 constexpr std::size_t kExclude = 4;
 
+// Shortest record whose periodogram has lines to tell apart: below it, no lines.
+constexpr std::size_t kMinSamples = 16;
+
+// A second line is rational when f2 / f1 lies near p/q with q <= kMaxDenominator
+// (docs/notes/analysis.md: "rational if p/q with q <= 3"): a period-2 or period-3 response.
+constexpr int kMaxDenominator = 3;
+
+// The maxima follow the faster mode when their rate matches its frequency within this share
+// (docs/notes/analysis.md "Orbital period": "within 10 %").
+constexpr double kMaximaRateTolerance = 0.1;
+
 std::vector<double> periodogram(std::span<const double> x) {
   const std::size_t n = x.size();
   const double m = mean_of(x);
@@ -49,7 +60,7 @@ double lobe_power(const std::vector<double>& p, std::size_t k) {
 // f2 / f1 near p/q (q <= 3), within a bin plus half a bin per unit of p/q (f1's own error
 // scaled up).
 bool rational(double b1, double b2) {
-  for (int q = 1; q <= 3; ++q) {
+  for (int q = 1; q <= kMaxDenominator; ++q) {
     const double pq = std::round(q * b2 / b1) / q;
     if (pq > 0.0 && std::abs(b2 - pq * b1) <= 1.0 + 0.5 * pq) return true;
   }
@@ -60,7 +71,7 @@ bool rational(double b1, double b2) {
 
 SpectralLines spectral_lines(std::span<const double> x) {
   SpectralLines s;
-  if (x.size() < 16) return s;
+  if (x.size() < kMinSamples) return s;
   const std::vector<double> p = periodogram(x);
   const double n = static_cast<double>(2 * (p.size() - 1));
   // Skip DC's lobe (a mean offset or a slow drift is no line).
@@ -82,7 +93,7 @@ SpectralLines spectral_lines(std::span<const double> x) {
 }
 
 double orbital_period(double maxima_spacing, const SpectralLines& lines, std::size_t samples) {
-  if (!(lines.second_frequency > 0.0) || samples < 16) return maxima_spacing;
+  if (!(lines.second_frequency > 0.0) || samples < kMinSamples) return maxima_spacing;
   const double bins = static_cast<double>(fast_fft_size(samples));
   const double slow = std::min(lines.first_frequency, lines.second_frequency) * bins;
   const double fast = std::max(lines.first_frequency, lines.second_frequency) * bins;
@@ -95,7 +106,7 @@ double orbital_period(double maxima_spacing, const SpectralLines& lines, std::si
   // The maxima follow the faster mode when their rate is its frequency (the faster mode's
   // swings each make a maximum); the state repeats only after the slower line's period.
   const double mismatch = std::abs(maxima_spacing * fast / bins - 1.0);
-  return mismatch <= 0.1 ? bins / slow : maxima_spacing;
+  return mismatch <= kMaximaRateTolerance ? bins / slow : maxima_spacing;
 }
 
 }  // namespace pneumachaos

@@ -13,9 +13,23 @@
 namespace pneumachaos {
 namespace {
 
+// Welch's default segment: the largest power of two <= N / kMinSegments within
+// [kMinSegmentLength, kMaxSegmentLength] (docs/notes/analysis.md, "segment = largest power of
+// two <= N/8 in [64, 8192]"): at least eight segments (fifteen with 50 % overlap) to average.
+constexpr std::size_t kMinSegments = 8;
+constexpr std::size_t kMinSegmentLength = 64;
+constexpr std::size_t kMaxSegmentLength = 8192;
+
+// Shortest segment accepted for SpectrumOptions::segment_length: a floor on the user's choice
+// (the default never goes below kMinSegmentLength).
+constexpr std::size_t kShortestSegment = 8;
+
+// Exact zeros of the PSD (a constant record) enter the flatness's log-mean as this instead.
+constexpr double kPowerFloor = 1e-300;
+
 std::size_t default_segment(std::size_t n) {
-  std::size_t L = 64;
-  while (L * 2 <= n / 8 && L * 2 <= 8192) L *= 2;
+  std::size_t L = kMinSegmentLength;
+  while (L * 2 <= n / kMinSegments && L * 2 <= kMaxSegmentLength) L *= 2;
   return L;
 }
 
@@ -23,7 +37,10 @@ std::size_t default_segment(std::size_t n) {
 
 void SpectrumOptions::validate(std::size_t n_samples) const {
   const std::size_t L = segment_length == 0 ? default_segment(n_samples) : segment_length;
-  if (L < 8) throw Error("spectrum.segment_length", "must be at least 8 samples");
+  if (L < kShortestSegment) {
+    throw Error("spectrum.segment_length",
+                fmt::format("must be at least {} samples", kShortestSegment));
+  }
   if (n_samples < L) {
     throw Error("spectrum",
                 fmt::format("{} samples is shorter than one segment of {}", n_samples, L));
@@ -74,9 +91,9 @@ Spectrum welch_spectrum(std::span<const double> x, double rate_Hz, const Spectru
     std::partial_sort(sorted.begin(), sorted.begin() + top, sorted.end(), std::greater<>());
     s.broadband_share = 1.0 - std::accumulate(sorted.begin(), sorted.begin() + top, 0.0) / total;
     // Flatness on the bins that carry power; exact zeros (a pure tone between bins is never
-    // exactly zero, but a constant record is) count as the smallest positive double.
+    // exactly zero, but a constant record is) count as kPowerFloor.
     double log_sum = 0.0;
-    for (std::size_t k = 1; k < bins; ++k) log_sum += std::log(std::max(s.psd[k], 1e-300));
+    for (std::size_t k = 1; k < bins; ++k) log_sum += std::log(std::max(s.psd[k], kPowerFloor));
     s.spectral_flatness = std::exp(log_sum / (bins - 1)) / (total / (bins - 1));
   }
   return s;

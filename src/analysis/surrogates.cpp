@@ -17,6 +17,16 @@
 namespace pneumachaos {
 namespace {
 
+// The surrogates are made of the longest segment whose ends match, at least (1 - 1 /
+// kMaxTrimShare) of the record (docs/notes/analysis.md "Surrogate-data test": "the longest
+// 90-100 % segment whose ends match"), and of at least kMinSegment samples.
+constexpr std::size_t kMaxTrimShare = 10;
+constexpr std::size_t kMinSegment = 4;
+
+// Surrogate k's seed is seed x kGoldenGamma + k: the odd 64-bit golden-ratio constant
+// (2^64 / phi, as in Steele, Lea & Flood 2014's SplitMix64) spreads neighbouring seeds apart.
+constexpr std::uint64_t kGoldenGamma = 0x9E3779B97F4A7C15ULL;
+
 // Portable randomness: std::mt19937_64's output sequence is fixed by the standard, but the
 // standard distributions are not; these two helpers are ours, so a seed gives the same
 // surrogates with every standard library.
@@ -64,7 +74,7 @@ std::pair<std::size_t, std::size_t> end_matched_segment(std::span<const double> 
   const std::size_t N = x.size();
   std::size_t best_n = 0, best_off = 0;
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t n = N; n + N / 10 >= N && n >= 4; --n) {
+  for (std::size_t n = N; n + N / kMaxTrimShare >= N && n >= kMinSegment; --n) {
     if (fast_fft_size(n) != n) continue;
     for (std::size_t off = 0; off + n <= N; ++off) {
       const double jump = x[off + n - 1] - x[off];
@@ -164,11 +174,11 @@ SurrogateTest surrogate_test(std::span<const double> x, const PredictionOptions&
   t.samples = n;
   t.offset = offset;
   // Each surrogate's seed follows from the test's seed and its index alone, so the surrogates
-  // are made side by side on every core (they were three quarters of an analysis) and the
+  // are made side by side on every core (they are three quarters of an analysis) and the
   // statistics are the same at any thread count.
   t.surrogate_statistics.assign(o.count, 0.0);
   const auto one = [&](std::size_t k) {
-    const auto s = iaaft_surrogate(segment, o.seed * 0x9E3779B97F4A7C15ULL + k, o.max_iterations,
+    const auto s = iaaft_surrogate(segment, o.seed * kGoldenGamma + k, o.max_iterations,
                                   o.spectral_tolerance);
     t.surrogate_statistics[k] = nonlinear_prediction_error(s, prediction);
   };

@@ -15,6 +15,19 @@
 namespace pneumachaos {
 namespace {
 
+// The mean square displacement is read up to n_cut = N / kDisplacementShare (Gottwald &
+// Melbourne 2009 use n_cut = N / 10: n_cut << N keeps each displacement an average).
+constexpr std::size_t kDisplacementShare = 10;
+
+// Frequencies c are drawn from (pi / 5, 4 pi / 5), the interval Gottwald & Melbourne 2009 draw
+// them from (docs/notes/analysis.md "The 0-1 test").
+constexpr double kLowestFrequency = std::numbers::pi / 5.0;
+constexpr double kFrequencyRange = 3.0 * std::numbers::pi / 5.0;
+
+// Fewest points the validator accepts for min_points: at 20 points n_cut = N / 10 is 2, the
+// fewest displacements a correlation with n can be computed on.
+constexpr std::size_t kFewestPoints = 20;
+
 double correlation(const std::vector<double>& a, const std::vector<double>& b) {
   const double n = static_cast<double>(a.size());
   double ma = 0, mb = 0;
@@ -61,8 +74,8 @@ std::vector<double> mean_square_displacement(const std::vector<std::complex<doub
 
 // e^{i k c} for k = 1 .. count: each from the one before by one rotation, and from the
 // library's sine and cosine every kAnchor steps, so the rounding of the products cannot
-// build up beyond ~kAnchor ulp (1e-14; they were a tenth of a 1e4 analysis as one sine and
-// cosine per sample and frequency: docs/notes/performance.md).
+// build up beyond ~kAnchor ulp (1e-14; one sine and cosine per sample and frequency cost a
+// tenth of a 1e4 analysis: docs/notes/performance.md).
 std::vector<std::complex<double>> unit_phases(std::size_t count, double c) {
   constexpr std::size_t kAnchor = 64;
   std::vector<std::complex<double>> e(count);
@@ -77,7 +90,7 @@ std::vector<std::complex<double>> unit_phases(std::size_t count, double c) {
 // oscillatory term of the 2009 paper (eq. 3.4: (E phi)^2 (1 - cos nc) / (1 - cos c)),
 // correlated with n.
 double k_of_c(const std::vector<double>& phi, double mean, double c, const DftPlan& plan) {
-  const std::size_t N = phi.size(), ncut = N / 10;
+  const std::size_t N = phi.size(), ncut = N / kDisplacementShare;
   const std::vector<std::complex<double>> e = unit_phases(N, c);
   std::vector<std::complex<double>> z(N);
   std::complex<double> walk = 0.0;
@@ -107,7 +120,9 @@ double quantile(std::vector<double> v, double q) {
 
 void ZeroOneOptions::validate() const {
   if (frequencies == 0) throw Error("zero_one.frequencies", "must be at least 1");
-  if (min_points < 20) throw Error("zero_one.min_points", "must be at least 20");
+  if (min_points < kFewestPoints) {
+    throw Error("zero_one.min_points", fmt::format("must be at least {}", kFewestPoints));
+  }
   if (max_points < min_points) throw Error("zero_one.max_points", "must be >= min_points");
 }
 
@@ -135,7 +150,7 @@ ZeroOneResult zero_one_test(std::span<const double> x, std::size_t step,
   const DftPlan plan(fast_fft_size(phi.size()));
   for (std::size_t k = 0; k < o.frequencies; ++k) {
     const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-    const double c = std::numbers::pi / 5.0 + u * (3.0 * std::numbers::pi / 5.0);
+    const double c = kLowestFrequency + u * kFrequencyRange;
     K.push_back(k_of_c(phi, mean, c, plan));
   }
   r.K = quantile(K, 0.5);

@@ -35,9 +35,8 @@ std::vector<std::string> split(const std::string& line, bool commas) {
   return fields;
 }
 
-// The same fields as split(), as views into `line` (no allocation per field): the reader's
-// per-line cost was a string stream and a string per field, 11 % of a 1e4-sample analysis
-// (docs/notes/performance.md). Fields that start or end with a quote are left as they are for the
+// The same fields as split(), as views into `line` (no allocation per field): a string stream
+// and a string per field cost 11 % of a 1e4-sample analysis (docs/notes/performance.md). Fields that start or end with a quote are left as they are for the
 // caller to trim exactly as trim_field does.
 void split_views(std::string_view line, bool commas, std::vector<std::string_view>& fields) {
   fields.clear();

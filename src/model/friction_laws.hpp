@@ -9,9 +9,9 @@
 // automatic-differentiation scalars when the friction parameters themselves are fitted
 // (src/identify/friction_fits.cpp).
 //
-// The double instantiation kept the arithmetic of the hand-written laws it replaced,
-// operation for operation; since then it reads a textured bore's factor from the Plant's
-// table (texture_table.hpp), within the table's stated bound of the sines.
+// The double instantiation does the arithmetic of hand-written double laws, operation for
+// operation; a textured bore's factor is read from the Plant's table (texture_table.hpp),
+// within the table's stated bound of the sines.
 
 #include <cmath>
 #include <optional>

@@ -4,8 +4,8 @@
 // derivative() instantiates them on double, jacobian() on an automatic-differentiation scalar,
 // and the equilibrium search solves their residual. Private to the model module.
 //
-// The double instantiation keeps the arithmetic of the hand-written derivative it replaced,
-// operation for operation, so that simulations stay bit-identical.
+// The double instantiation does the arithmetic of a hand-written double derivative, operation
+// for operation, so that simulations are bit-identical to one.
 
 #include <type_traits>
 

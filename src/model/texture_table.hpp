@@ -1,7 +1,7 @@
 #pragma once
 // The bore texture's factor 1 + sum a sin(k x + phase), tabulated along the stroke for
 // evaluation speed (docs/model.md, "Friction"; docs/notes/performance.md, "The texture table"):
-// four library sines per contact and evaluation were a fifth of a textured sweep run's time.
+// four library sines per contact and evaluation cost a fifth of a textured sweep run's time.
 // Private to the model module.
 
 #include <memory>

@@ -33,9 +33,13 @@ DelayChoice choose_delay(std::span<const double> x, std::size_t max_lag = 0, dou
 inline constexpr double kNoiseBinWidth = 2.0;
 
 /// `c`, unless its delay is an orbit (`orbit_samples`, e.g. the mean spacing of the maxima)
-/// or more: then a quarter of the orbit, where the first minimum of an oscillation's I lies,
-/// with `method` saying so. Orbits under 8 samples (maps, noise) leave `c` as it is.
+/// or more: then kDelayShareOfOrbit of the orbit, where the first minimum of an oscillation's
+/// I lies, with `method` saying so. Orbits under 8 samples (maps, noise) leave `c` as it is.
 DelayChoice delay_within_an_orbit(DelayChoice c, double orbit_samples);
+/// A quarter of the orbit: where a sine's I(tau) has its first minimum (mutual_information
+/// above). The analysis's evidence scale caps the delay at the same share
+/// (docs/notes/analysis.md "Evidence scale").
+inline constexpr double kDelayShareOfOrbit = 0.25;
 
 struct DimensionChoice {
   std::size_t dimension = 2;

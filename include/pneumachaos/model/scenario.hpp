@@ -130,7 +130,7 @@ struct Scenario {
 Scenario default_scenario();
 
 /// What a user should know about a valid scenario, one sentence each (commands print them as
-/// notes): today, a cylinder other than the virtual rig's (another bore) that still carries
+/// notes): a cylinder other than the virtual rig's (another bore) that still carries
 /// the rig's compliant load mount, whose mode then dominates its record.
 std::vector<std::string> scenario_notes(const Scenario& scenario);
 
