@@ -1,5 +1,5 @@
 // `fit` with four free parameters (S1, S2, Fc, Fs) on one core, from start values 20-25 %
-// off, on 6 s records of the rigid single-mass rig degraded like an A/D rig (docs/fit.md):
+// off, on 6 s records of the rigid single-mass rig degraded like an A/D rig (docs/notes/model_fit.md):
 // sliding and stick-slip. Goal: under 30 s each.
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_fit
 #include <benchmark/benchmark.h>

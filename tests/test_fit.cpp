@@ -1,7 +1,7 @@
-// fit_model (docs/fit.md): synthetic "measured" records from our own model with known S1, S2,
+// fit_model (docs/notes/model_fit.md): synthetic "measured" records from our own model with known S1, S2,
 // degraded as an A/D rig degrades them (pressure noise 300 Pa, 12-bit quantisation, velocity
 // noise 0.5 mm/s, 6 s), fitted from start values 20-30 % off. S1 and S2 must come back within
-// 5 %. The sixteen-record accuracy table (docs/fit.md) runs under the CTest label `long`.
+// 5 %. The sixteen-record accuracy table (docs/notes/model_fit.md) runs under the CTest label `long`.
 
 #include <gtest/gtest.h>
 
@@ -84,7 +84,7 @@ TEST(Fit, RecoversS1S2FromClassicSealRecord) {
   expect_recovered(r, truth, 0.05);
 }
 
-// The accuracy table of docs/fit.md: eight stick-slip and eight sliding records (seeds 1-8),
+// The accuracy table of docs/notes/model_fit.md: eight stick-slip and eight sliding records (seeds 1-8),
 // four free parameters from S1 x1.25, S2 x0.78, Fc x1.2, Fs x0.9. Printed per record.
 TEST(Fit, RecoversS1S2FromStickSlipRecord) {
   if (std::getenv("PNEUMACHAOS_LONG_TESTS") == nullptr) {

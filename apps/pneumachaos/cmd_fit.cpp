@@ -1,5 +1,5 @@
 // `pneumachaos fit`: identify scenario keys (valve areas, dead volumes, seal friction) from a
-// measured record by segment-wise simulation and Ceres least squares (docs/fit.md).
+// measured record by segment-wise simulation and Ceres least squares (docs/notes/model_fit.md).
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 """The module at parity with the command line: the same numbers from the same record and
-seed, and bad arguments refused by name at the call (docs/python.md)."""
+seed, and bad arguments refused by name at the call (docs/reference/python-api.md)."""
 
 import json
 import os

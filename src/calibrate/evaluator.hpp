@@ -41,7 +41,7 @@ class Evaluator {
 };
 
 /// A record's error at a scenario: the RMS over its samples and its three signals of the
-/// segment-wise simulation's residuals, each divided by its noise scale (docs/fit.md).
+/// segment-wise simulation's residuals, each divided by its noise scale (docs/notes/model_fit.md).
 double scaled_record_error(const identify::ValidationSeries& v, double pressure_scale_Pa,
                            double velocity_scale_m_per_s);
 

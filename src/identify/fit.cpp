@@ -1,5 +1,5 @@
 // Model identification by segment-wise simulation (multiple shooting) and Ceres least squares;
-// the method and its limits: docs/fit.md.
+// the method and its limits: docs/notes/model_fit.md.
 
 #include "pneumachaos/identify/fit.hpp"
 
@@ -320,7 +320,7 @@ ValidationSeries validation_of(const Prepared& prep, const Scenario& scenario,
 
 std::vector<std::string> default_free_keys(const Scenario& /*start*/) {
   // The valve areas set the pressure rates, Fc the sliding force balance and Fs the
-  // breakaways; all four shape P1, P2 and v. vs, B, sigma0/1 are weakly seen (docs/fit.md).
+  // breakaways; all four shape P1, P2 and v. vs, B, sigma0/1 are weakly seen (docs/notes/model_fit.md).
   return {"circuit.S1_mm2", "circuit.S2_mm2", "friction.Fc_N", "friction.Fs_N"};
 }
 

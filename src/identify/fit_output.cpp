@@ -1,4 +1,4 @@
-// The outputs of `pneumachaos fit`: JSON, validation CSV and its plot commands (docs/fit.md).
+// The outputs of `pneumachaos fit`: JSON, validation CSV and its plot commands (docs/reference/outputs.md).
 
 #include <fmt/format.h>
 

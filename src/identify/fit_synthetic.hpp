@@ -1,6 +1,6 @@
 #pragma once
 // Synthetic "measured" records: a simulation of our own model degraded as an A/D rig
-// degrades its signals (docs/fit.md, "Validation"). For tests, benchmarks and trying `fit`.
+// degrades its signals (docs/notes/model_fit.md, "Accuracy reached"). For tests, benchmarks and trying `fit`.
 
 #include <cstdint>
 

@@ -50,7 +50,7 @@ struct ConditionSet {
 
 enum class ObjectiveKind { kClaims, kIncidenceMap, kRecords };
 
-/// A measured record (P1, P2, v; docs/fit.md "Input") and the conditions it was taken at; a
+/// A measured record (P1, P2, v; docs/guide/record-fits.md "The record") and the conditions it was taken at; a
 /// condition not given keeps the [fixed] scenario's value.
 struct RecordCondition {
   std::string file;  ///< the CSV's path (relative to the spec's folder)
@@ -81,7 +81,7 @@ struct ObjectiveSpec {
   double stick_slip_weight = 1.0, chaos_weight = 1.0;  ///< kIncidenceMap
   std::vector<RecordCondition> records;  ///< kRecords
   /// kRecords: the segment-wise simulation's segment and the noise scales of its residuals,
-  /// as `fit` uses them (docs/fit.md, "Method").
+  /// as `fit` uses them (docs/notes/model_fit.md, "Method").
   double segment_s = 0.2, pressure_scale_kPa = 1.0, velocity_scale_mm_per_s = 30.0;
 };
 

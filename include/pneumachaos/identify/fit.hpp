@@ -1,5 +1,5 @@
 #pragma once
-// Model identification from a measured record (docs/fit.md): the scenario keys named free are
+// Model identification from a measured record (docs/notes/model_fit.md): the scenario keys named free are
 // adjusted until segment-wise simulations of the plant reproduce the measured P1, P2 and v.
 // Ceres Solver minimises the noise-scaled simulation error; its covariance gives the standard
 // errors.
@@ -22,12 +22,12 @@ struct FitOptions {
   /// with segment_length_s; the candidate whose simulation error is least with
   /// segment_length_s segments (the start values included) starts the final fit. Short
   /// segments keep a mistimed slip cheap, long ones see the slow dynamics: which of them
-  /// leads to the global minimum depends on the record (docs/fit.md). Empty: no global stage.
+  /// leads to the global minimum depends on the record (docs/notes/model_fit.md). Empty: no global stage.
   std::vector<double> first_segment_lengths_s = {0.05, 0.1, 0.2, 0.5};
   /// Noise scales dividing the residuals: what one unit of error is worth in each signal.
   /// Not the sensor noise alone but the error a segment simulation makes: a slip a
   /// millisecond early is tens of mm/s of velocity error, so v is scaled by 30 mm/s, else
-  /// the slip timing drowns the pressure signals that carry S2 (docs/fit.md).
+  /// the slip timing drowns the pressure signals that carry S2 (docs/notes/model_fit.md).
   double pressure_scale_Pa = 1000.0;
   double velocity_scale_m_per_s = 0.03;
   /// Multiple shooting proper: each segment's starting P1, P2 are fitted too (two parameters
@@ -122,7 +122,7 @@ ValidationSeries segment_simulation(const MeasuredRecord& record, const Scenario
                                     const FitOptions& options = {});
 
 /// The --json document of `pneumachaos fit`: parameters.<key>.{value, stderr, unit, start},
-/// rms, cost, method settings, the Ceres summary (docs/fit.md lists every field).
+/// rms, cost, method settings, the Ceres summary (docs/reference/outputs.md lists every field).
 std::string fit_json(const FitResult& result, const FitOptions& options,
                      const MeasuredRecord& record);
 
