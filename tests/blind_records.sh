@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/blind_records.py on the built CLI: no regular or stochastic record of the blind set
+# bench/blind_records.py on the built CLI: no regular or stochastic record of the blind set
 # may be called chaotic (docs/validation.md, the blind-records row). Skipped (77) without numpy.
 set -euo pipefail
 cli=$1

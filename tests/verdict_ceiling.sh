@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/verdict_ceiling.py on made-up runs. Classifiers fitted to labels that one number
+# bench/verdict_ceiling.py on made-up runs. Classifiers fitted to labels that one number
 # decides must find that boundary (the best cross-validated agreement >= 95 %, each at least
 # 10 points above calling every run regular: nearest neighbours lose some to the irrelevant
 # numbers) and fail on --transfer runs where the number means the opposite. They must not

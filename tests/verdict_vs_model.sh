@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/verdict_vs_model.py: a run whose model label differs between settings of the model's
+# bench/verdict_vs_model.py: a run whose model label differs between settings of the model's
 # exponent leaves the settled table; a relabelling whose record verdicts differ is refused.
 set -euo pipefail
 script=$1

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/verdict_vs_model_sweeps.sh: each --set reaches every sweep after the script's own
+# bench/verdict_vs_model_sweeps.sh: each --set reaches every sweep after the script's own
 # (so it overrides them), --surrogates N reaches every sweep, and a --set without KEY=VALUE is
 # refused with exit code 2. A stand-in
 # for the CLI records its arguments and writes a one-run runs.csv, so no sweep is simulated.

@@ -392,7 +392,7 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     nothing, a callable is called as progress(done, total) after every run. The rest are the
     CLI's --wolf, --surrogates and --model-exponent with --model-transient, --model-measure
     and --model-renormalize (docs/sweep.md): e.g. model_exponent=True stores each run's model
-    exponent, so the verdict can be checked against it (scripts/verdict_vs_model.py); the
+    exponent, so the verdict can be checked against it (bench/verdict_vs_model.py); the
     model settings need model_exponent=True (defaults 1 s, 0 = the rest of the run, 0.02 s).
     adaptive=True (a grid of two axes) is the CLI's --adaptive with --adaptive-step: a coarse
     lattice, then only the cells whose points differ; the summary gains inferred_points and

@@ -162,7 +162,7 @@ RuleResult a_few_points(std::size_t always_chaotic, std::size_t points);
 /// The verdict's false-positive rate per judged run: of the default rig's validation runs
 /// that the model's own exponent calls non-chaotic, 197 got a verdict other than steady or
 /// undetermined (neither can be a false positive) and 14 of those were called chaotic
-/// (scripts/verdict_vs_model_sweeps.sh; docs/report.md, "The claims table").
+/// (bench/verdict_vs_model_sweeps.sh; docs/report.md, "The claims table").
 constexpr double kVerdictFalsePositiveRate = 14.0 / 197.0;
 /// The most chaotic runs that the false-positive rate alone gives in `judged` runs (the
 /// binomial distribution's 95 % quantile).
