@@ -416,6 +416,7 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("wolf", &AnalysisOptions::wolf)
       .def_readwrite("velocity", &AnalysisOptions::velocity)
       .def_readwrite("embedding_spread", &AnalysisOptions::embedding_spread)
+      .def_readwrite("paper_judge", &AnalysisOptions::paper_judge)
       .def_readwrite("dimension", &AnalysisOptions::dimension)
       .def_readwrite("delay", &AnalysisOptions::delay)
       .def_readwrite("theiler", &AnalysisOptions::theiler)

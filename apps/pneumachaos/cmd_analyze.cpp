@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "flag_names.hpp"
 #include "pneumachaos/analysis/analysis_output.hpp"
+#include "pneumachaos/analysis/paper_judge.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
@@ -40,6 +41,7 @@ struct AnalyzeArgs {
   std::string json;
   std::string series_out;
   bool no_wolf = false;
+  std::string judge = "strict";
   bool explain = false;
   bool quiet = false;
   bool no_embedding_spread = false;
@@ -50,6 +52,9 @@ struct AnalyzeArgs {
 AnalysisOptions analysis_options(const AnalyzeArgs& a) {
   AnalysisOptions options;
   options.wolf = !a.no_wolf;
+  options.paper_judge = a.judge == "paper";
+  if (options.paper_judge && a.no_wolf)
+    throw Error("--judge", "paper reads Wolf's exponent, which --no-wolf skips");
   options.embedding_spread = !a.no_embedding_spread;
   options.surrogates.count = surrogate_count_option(a.surrogates, 39);
   if (a.seed) {
@@ -103,6 +108,7 @@ int run_analyze(const AnalyzeArgs& a) {
     chosen.on_stage = [&progress](const char* stage) { progress.stage(stage); };
     r = analyzed(channel, series.rate_Hz(), chosen, a.file);
   }
+  if (chosen.paper_judge) fmt::print("the paper's judge: {}\n", describe(paper_judge(r)));
   fmt::print("{}", analysis_summary(r, channel.name, channel.unit, a.explain));
   // The JSON and the curves appear together or not at all.
   OutputSet outputs;
@@ -154,6 +160,12 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_option("--judge", args->judge,
+                  "strict (default): the regime verdict leads; paper: the paper's three "
+                  "indices (spectrum without a dominant line, autocorrelation converging to "
+                  "zero, Wolf's exponent positive) lead, Wolf running on every record as the "
+                  "paper's did; both are reported either way when Wolf ran")
+      ->check(CLI::IsMember({"strict", "paper"}));
   add_quiet_flag(cmd, args->quiet);
   cmd->add_flag("--explain", args->explain,
                 "print the rule that combines the evidence into the verdict (a paragraph)");

@@ -282,3 +282,16 @@ def test_reproduce_gives_the_command_lines_claims(tmp_path):
     assert py["report"] == str(tmp_path / "py" / "index.html")
     assert os.path.exists(py["report"])
     assert seen and max(done for done, _ in seen) > 0
+
+
+def test_the_papers_judge_reads_as_on_the_command_line():
+    noise = np.random.default_rng(7).normal(size=5000)
+    strict = pc.analyze(noise, 1000.0, surrogates=0)
+    assert strict["paper_judge"]["chaotic"] is None  # Wolf skipped on linear noise
+    paper = pc.analyze(noise, 1000.0, surrogates=0, judge="paper")
+    assert paper["paper_judge"]["chaotic"] is True
+    assert paper["verdict"]["regime"] == "stochastic"
+    with pytest.raises(ValueError, match=r"^judge: expected 'strict' or 'paper'"):
+        pc.analyze(noise, 1000.0, judge="Paper")
+    with pytest.raises(ValueError, match=r"^judge: the paper's judge reads Wolf"):
+        pc.analyze(noise, 1000.0, judge="paper", wolf=False)

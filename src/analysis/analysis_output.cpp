@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/analysis/paper_judge.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "io/json_quantity.hpp"
 
@@ -75,6 +76,23 @@ nlohmann::json repetition_json(const AnalysisResult& r) {
           {"growth", value(s.growth_per_s, "1/s")},
           {"repeats", s.repeats},
           {"method", "RMS of x(t + L) - x(t) relative to sqrt(2) std, per one-period window"}};
+}
+
+// The paper's three indices (pneumachaos/analysis/paper_judge.hpp); null where one is missing.
+nlohmann::json paper_judge_json(const PaperJudgement& p) {
+  if (!p.evaluated) return {{"chaotic", nullptr}, {"status", p.why}};
+  return {{"chaotic", p.chaotic},
+          {"no_dominant_line", p.flat_spectrum},
+          {"peak_share", quantity(p.peak_share, "-")},
+          {"acf_converges", p.acf_converges},
+          {"acf_envelope_after_1s", quantity(*p.acf_envelope, "-")},
+          {"wolf_positive", p.wolf_positive},
+          {"wolf", quantity(p.wolf_per_s, "1/s")},
+          {"wolf_uncertainty", quantity(p.wolf_uncertainty_per_s, "1/s")},
+          {"thresholds", {{"peak_share", kPaperPeakShare},
+                          {"acf_envelope", kPaperAcfEnvelope},
+                          {"acf_after", quantity(kPaperAcfAfter_s, "s")},
+                          {"wolf_sigmas", kPaperExponentSigmas}}}};
 }
 
 std::string evidence_summary(const AnalysisResult& r) {
@@ -251,6 +269,8 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                        r.poincare.points.size(), r.maxima_map.size());
     out += evidence_summary(r);
   }
+  out += "the paper's judge (its three indices, beside the verdict): " +
+         describe(paper_judge(r)) + "\n";
   out += fmt::format("evidence for the verdict ({}):\n", regime_name(r.verdict.regime));
   for (const auto& line : r.verdict.evidence) out += evidence_line(line, explain);
   return out;
@@ -361,6 +381,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                              {"replacements", r.wolf.replacements},
                              {"method", "Wolf, Swift, Swinney & Vastano 1985"}};
   }
+  j["paper_judge"] = paper_judge_json(paper_judge(r));
   j["poincare"] = {{"points", r.poincare.points.size()},
                    {"level", quantity(r.poincare.level, unit)}};
   j["zero_one"] = zero_one_json(r);

@@ -21,29 +21,20 @@ RuleResult both(const RuleResult& a, const RuleResult& b) {
   return r;
 }
 
-std::optional<double> acf_envelope_after(const std::vector<double>& r, double rate_Hz,
-                                         double after_s) {
-  const auto first = static_cast<std::size_t>(after_s * rate_Hz);
-  if (first >= r.size()) return std::nullopt;  // no lag that long: nothing to judge
-  double m = 0.0;
-  for (std::size_t k = first; k < r.size(); ++k) m = std::max(m, std::abs(r[k]));
-  return m;
-}
-
 RuleResult acf_converged(double envelope) {
-  return rule_result((0.2 - envelope) / 0.2,
-                 fmt::format("the autocorrelation still reaches {:.2f} after 1 s, above 0.2",
-                             envelope));
+  return rule_result((kPaperAcfEnvelope - envelope) / kPaperAcfEnvelope,
+                     fmt::format("the autocorrelation still reaches {:.2f} after {} s, above {}",
+                                 envelope, kPaperAcfAfter_s, kPaperAcfEnvelope));
 }
 
 RuleResult spectrum_without_dominant_peak(double peak_share) {
-  return rule_result((0.25 - peak_share) / 0.25,
+  return rule_result((kPaperPeakShare - peak_share) / kPaperPeakShare,
                  fmt::format("one spectral line holds {:.0f} % of the power, more than a quarter",
                              100 * peak_share));
 }
 
 RuleResult positive_exponent(double lambda, double uncertainty) {
-  const double scale = 3.0 * std::max(uncertainty, 1e-12);
+  const double scale = kPaperExponentSigmas * std::max(uncertainty, 1e-12);
   return rule_result((lambda - scale) / scale,
                  fmt::format("the exponent {:.2f} 1/s is not above 3 times its uncertainty "
                              "({:.2f} 1/s)",

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "pneumachaos/analysis/paper_judge.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -27,10 +28,7 @@ RuleResult both(const RuleResult& a, const RuleResult& b);
 
 // ---- Fig. 7b: the chaotic example's indices -------------------------------------------------
 
-/// Largest |r| at lags of at least after_s: the envelope the ACF still has there; none when
-/// the ACF does not reach that lag (a record too short to say whether it forgets itself).
-std::optional<double> acf_envelope_after(const std::vector<double>& r, double rate_Hz,
-                                         double after_s);
+// The thresholds and acf_envelope_after: the paper's judge (pneumachaos/analysis/paper_judge.hpp).
 /// "converged to zero": the envelope after 1 s at most 0.2.
 RuleResult acf_converged(double envelope_after_1s);
 /// "wide and even distribution without dominant peaks": no peak (+-1 bin) holds more than a
