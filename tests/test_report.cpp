@@ -263,16 +263,23 @@ TEST(Report, IncidenceMapMarksInferredPoints) {
     s.per_point.push_back(ps);
   }
   const FigureSpec full = incidence_map_figure("m", "t", spec, s);
-  EXPECT_EQ(full.data.size(), 2u);
+  EXPECT_EQ(full.data.size(), 3u);
   EXPECT_EQ(full.plot.find("inferred"), std::string::npos);
   s.per_point[3].inferred = true;
   s.inferred_points = 1;
   const FigureSpec adaptive = incidence_map_figure("m", "t", spec, s);
-  ASSERT_EQ(adaptive.data.size(), 3u);
-  EXPECT_EQ(adaptive.data[2].first, "m_inferred.dat");
-  EXPECT_NE(adaptive.data[2].second.find("\n2.5 0.2\n"), std::string::npos)
-      << adaptive.data[2].second;
+  ASSERT_EQ(adaptive.data.size(), 4u);
+  EXPECT_EQ(adaptive.data[3].first, "m_inferred.dat");
+  EXPECT_NE(adaptive.data[3].second.find("\n2.5 0.2\n"), std::string::npos)
+      << adaptive.data[3].second;
   EXPECT_NE(adaptive.plot.find("'m_inferred.dat' using 1:2 with points"), std::string::npos);
+  // The legend names every mark; the points run without chaos are marked, the inferred not.
+  EXPECT_NE(adaptive.plot.find("set key below"), std::string::npos);
+  EXPECT_NE(adaptive.plot.find("title 'inferred, not run'"), std::string::npos);
+  EXPECT_NE(adaptive.plot.find("title 'run, no chaos'"), std::string::npos);
+  EXPECT_EQ(adaptive.data[2].first, "m_calm.dat");
+  EXPECT_NE(adaptive.data[2].second.find("\n2.5 0.05\n"), std::string::npos);
+  EXPECT_EQ(adaptive.data[2].second.find("2.5 0.2"), std::string::npos);
   EXPECT_NE(adaptive.caption.find("1 of the 4 points were not run"), std::string::npos);
 }
 
