@@ -24,7 +24,8 @@ node "$here/browser/explore_report.mjs" "$dir/report" "$browser" "$PWD/screensho
 IFS=$'\t' read -r cmd line < <(python3 -c 'import json,sys
 s=open(sys.argv[1]).read(); m=json.loads(s[s.index("{"):s.rindex(";")])["maps"][0]
 c=next(c for c in m["cells"] if c["rows"])
-print(c["replay"][0].replace("pneumachaos ", "", 1), ",".join(c["rows"][0][2:]), sep="\t")' "$dir/report/report_data.js") || exit 1
+r=c["rows"][0]; cmd=m["replay"].replace("pneumachaos ", "", 1)+" --replay %s:%s" % (c["point"], r[m["columns"].index("repeat")])
+print(cmd, ",".join(r[2:]), sep="\t")' "$dir/report/report_data.js") || exit 1
 again=$(cd "$dir" && eval "\"$cli\" $cmd" 2>&1 >/dev/null | awk 'NR > 1 {print $2}' | paste -sd,)
 echo "replayed: $again"
 [ "$again" = "$line" ] || { echo "FAIL: the replay command gave another run than runs.csv: $line"; exit 1; }

@@ -48,7 +48,7 @@ RunsTable read_runs(const std::string& path) {
   return t;
 }
 
-Json cell_json(const MapData& m, const PointSummary& p, const RunsTable& runs) {
+Json cell_json(const PointSummary& p, const RunsTable& runs) {
   Json c = {{"point", p.point},
             {"x", p.coordinates.at(0)},
             {"y", p.coordinates.at(1)},
@@ -64,18 +64,13 @@ Json cell_json(const MapData& m, const PointSummary& p, const RunsTable& runs) {
   c["regimes"] = regimes;
   const auto it = runs.by_point.find(p.point);
   c["rows"] = it == runs.by_point.end() ? Json::array() : Json(it->second);
-  Json replay = Json::array();
-  for (std::size_t r = 0; r < m.spec.repeats; ++r)
-    replay.push_back(fmt::format("pneumachaos sweep {} --replay {}:{} -o run_{}_{}.csv",
-                                 replay_arguments(m), p.point, r, p.point, r));
-  c["replay"] = replay;
   return c;
 }
 
 Json map_json(const MapData& m, const std::string& report_dir) {
   const RunsTable runs = read_runs(report_dir + "/" + m.sweep_dir + "/runs.csv");
   Json cells = Json::array();
-  for (const PointSummary& p : m.summary.per_point) cells.push_back(cell_json(m, p, runs));
+  for (const PointSummary& p : m.summary.per_point) cells.push_back(cell_json(p, runs));
   return {{"figure", m.figure},
           {"title", m.title},
           {"sweep", m.sweep_dir},
@@ -84,6 +79,9 @@ Json map_json(const MapData& m, const std::string& report_dir) {
           {"x", m.spec.axes[0].values},
           {"y", m.spec.axes[1].values},
           {"repeats", m.spec.repeats},
+          // A run's command is this with " --replay P:R -o run_P_R.csv": written once per map,
+          // as the full map would otherwise carry it thousands of times.
+          {"replay", "pneumachaos sweep " + replay_arguments(m)},
           {"columns", runs.columns},
           {"cells", cells}};
 }

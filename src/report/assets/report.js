@@ -130,7 +130,10 @@
       : '') + `. All columns: ${map.sweep}/runs.csv (surrogate rank: the maps run no surrogate test).`));
     if (cell.rows.length) panel.appendChild(runTable(map, cell));
     panel.appendChild(el('p', {}, 'Each run again, alone, from this folder:'));
-    cell.replay.forEach((c) => panel.appendChild(el('pre', { class: 'replay' }, c)));
+    for (let r = 0; r < map.repeats; ++r) {
+      panel.appendChild(el('pre', { class: 'replay' },
+        `${map.replay} --replay ${cell.point}:${r} -o run_${cell.point}_${r}.csv`));
+    }
     panel.appendChild(sameCellElsewhere(cell, index));
     document.querySelectorAll('.cell.open').forEach((g) => g.classList.remove('open'));
     document.querySelector(`.cell[data-map="${index}"][data-point="${point}"]`)
