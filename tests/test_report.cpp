@@ -251,6 +251,24 @@ TEST(Claims, Fig2PanelsAreLabelledAsThePapers) {
   EXPECT_LT(a, b);
 }
 
+// Fig. 2: a record that stops before the 3 s asked says why (the stroke end); a full one says
+// nothing.
+TEST(Report, TimeResponsesSayWhichLineStopsShort) {
+  const auto record = [](double seconds) {
+    TimeSeries t(100.0);
+    t.add_channel("v", "m/s",
+                  std::vector<double>(static_cast<std::size_t>(100 * seconds) + 1, 0.1));
+    return t;
+  };
+  const FigureSpec f =
+      time_responses_figure({{"S2 = 0.2 mm^2", record(3.0)}}, {{"S1 = 0.6 mm^2", record(1.9)}});
+  EXPECT_NE(f.caption.find("In (b), S1 = 0.6 mm^2 ends at 1.9 s: the piston reached the stroke "
+                           "end."),
+            std::string::npos)
+      << f.caption;
+  EXPECT_EQ(f.caption.find("In (a)"), std::string::npos) << f.caption;
+}
+
 // An adaptive map's figure marks its inferred points; a full map's figure has no such marks.
 TEST(Report, IncidenceMapMarksInferredPoints) {
   SweepSpec spec;

@@ -175,9 +175,8 @@ std::vector<Claim> load(const ClaimInputs& in) {
     judge(grows, region_grows(in.base->stick_slip_points, in.double_m->stick_slip_points));
     few.ours = fmt::format("{} points chaotic in every run", in.double_m->chaos_full_points);
     judge(few, a_few_points(in.double_m->chaos_full_points, in.double_m->points));
-    few.cells = points_where(*in.double_m, [](const PointSummary& p) {
-      return chaos_class(p) == ChaosClass::kAll;
-    });
+    few.cells = points_where(
+        *in.double_m, [](const PointSummary& p) { return chaos_class(p) == ChaosClass::kAll; });
   } else {
     grows = not_reproduced(grows, "maps missing");
     few = not_reproduced(few, "maps missing");
@@ -187,9 +186,8 @@ std::vector<Claim> load(const ClaimInputs& in) {
                 fmt::format("; {} points chaotic at least once", in.triple_m->chaos_any_points);
     judge(none, no_chaos_beyond_false_positives(chaotic_runs(*in.triple_m),
                                                 judged_runs(*in.triple_m)));
-    none.cells = points_where(*in.triple_m, [](const PointSummary& p) {
-      return chaos_class(p) != ChaosClass::kNone;
-    });
+    none.cells = points_where(
+        *in.triple_m, [](const PointSummary& p) { return chaos_class(p) != ChaosClass::kNone; });
   } else {
     none = not_reproduced(none, "map missing");
   }

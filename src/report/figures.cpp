@@ -37,6 +37,20 @@ std::string plot_columns(const std::string& file, const std::vector<LabelledReco
   return out;
 }
 
+// The records of a panel that end before `asked_s`: a run stops at the stroke end, and a line
+// that stops short must say why.
+std::string early_ends(const std::vector<LabelledRecord>& records, const char* panel,
+                       double asked_s) {
+  std::string out;
+  for (const auto& r : records) {
+    const double end_s = static_cast<double>(r.series.size() - 1) / r.series.rate_Hz();
+    if (end_s < asked_s - 1.5 / r.series.rate_Hz())
+      out += fmt::format(" In ({}), {} ends at {:.1f} s: the piston reached the stroke end.", panel,
+                         r.label, end_s);
+  }
+  return out;
+}
+
 }  // namespace
 
 FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
@@ -47,7 +61,8 @@ FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
       "Fig. 2: velocity responses of the paper's model (one rigid mass, eq. (4) friction) after "
       "the valve switches, under its own assumptions: (a) meter-out with the supply valve open "
       "wide (P1 = Ps, Section 3.2), (b) meter-in with the rod side open to atmosphere "
-      "(Section 3.3).";
+      "(Section 3.3)." +
+      early_ends(meter_out, "a", 3.0) + early_ends(meter_in, "b", 3.0);
   f.data = {{"fig2_meter_out.dat", records_table(meter_out, 3.0)},
             {"fig2_meter_in.dat", records_table(meter_in, 3.0)}};
   f.height = 640;
@@ -148,15 +163,15 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
       scale, beyond);
   f.data = {{"stability_map.dat", table}};
   f.plot =
-      "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]' offset 2,0\n"
+      "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]' "
+      "offset 2,0\n"
       "set palette defined (-1 'blue', 0 'white', 1 'red')\n" +
       fmt::format("set cbrange [-{0}:{0}]\n", scale) +
       "set title 'Stability of the steady motion: largest real part of the eigenvalues'\n"
       "set view map\nset key off\n"
       "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:($3 != $3 ? $2 : 1/0) "
       "with points pt 2 lc 'black', " +
-      fmt::format("'' using 1:(abs($3) > {} ? $2 : 1/0) with points pt 6 ps 0.6 lc 'black'",
-                  scale);
+      fmt::format("'' using 1:(abs($3) > {} ? $2 : 1/0) with points pt 6 ps 0.6 lc 'black'", scale);
   return f;
 }
 
@@ -186,8 +201,8 @@ MapLayers map_layers(const SweepSummary& summary, std::size_t n2, double d1, dou
     if (p.chaos_incidence > 0.0) ++l.both;
     // An outline inset into the cell, not a fill: the grey of the chaos incidence stays visible.
     const double x0 = x - 0.42 * d1, y0 = y - 0.42 * d2, w = 0.84 * d1, h = 0.84 * d2;
-    l.outline += fmt::format("{0} {1} {2} 0\n{0} {1} 0 {3}\n{4} {1} 0 {3}\n{0} {5} {2} 0\n", x0,
-                             y0, w, h, x0 + w, y0 + h);
+    l.outline += fmt::format("{0} {1} {2} 0\n{0} {1} 0 {3}\n{4} {1} 0 {3}\n{0} {5} {2} 0\n", x0, y0,
+                             w, h, x0 + w, y0 + h);
   }
   return l;
 }
@@ -210,8 +225,8 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
       "circle marks a point run with no chaotic run. Left: the paper's full grid; right: the "
       "same map zoomed to S2 < 0.7 mm^2, where the regimes change.",
       title, spec.repeats, l.both);
-  f.data = {{name + ".dat", l.grid}, {name + "_stick_slip.dat", l.outline},
-            {name + "_calm.dat", l.calm}};
+  f.data = {
+      {name + ".dat", l.grid}, {name + "_stick_slip.dat", l.outline}, {name + "_calm.dat", l.calm}};
   f.width = 1200;
   f.height = 600;
   std::string layers = fmt::format(
@@ -225,8 +240,10 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
         "corners of their cell (docs/sweep.md, \"Adaptive maps\"); a small blue dot marks each.",
         summary.inferred_points, summary.per_point.size());
     f.data.emplace_back(name + "_inferred.dat", l.inferred);
-    layers += fmt::format(", '{}_inferred.dat' using 1:2 with points pt 7 ps 0.5 lc '#1f77b4' "
-                          "title 'inferred, not run'", name);
+    layers += fmt::format(
+        ", '{}_inferred.dat' using 1:2 with points pt 7 ps 0.5 lc '#1f77b4' "
+        "title 'inferred, not run'",
+        name);
   }
   layers += "\n";
   f.plot = fmt::format(

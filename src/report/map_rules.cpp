@@ -72,8 +72,7 @@ std::vector<std::size_t> stick_slip_border_points(const std::vector<PointSummary
   return out;
 }
 
-std::vector<std::size_t> points_where(const SweepSummary& s,
-                                      bool (*keep)(const PointSummary&)) {
+std::vector<std::size_t> points_where(const SweepSummary& s, bool (*keep)(const PointSummary&)) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < s.per_point.size(); ++i)
     if (keep(s.per_point[i])) out.push_back(i);

@@ -9,8 +9,9 @@
 namespace pneumachaos {
 
 void write_report_assets(const std::string& dir) {
-  for (const auto& [name, text] : {std::pair<const char*, std::string_view>{"report.js", assets::report_js},
-                                   {"report.css", assets::report_css}}) {
+  for (const auto& [name, text] :
+       {std::pair<const char*, std::string_view>{"report.js", assets::report_js},
+        {"report.css", assets::report_css}}) {
     AtomicFile f(dir + "/" + name);
     f.stream() << text;
     f.commit();

@@ -13,7 +13,7 @@ namespace pneumachaos {
 
 /// One incidence map of the report and where its files are, relative to the report folder.
 struct MapData {
-  std::string figure;    ///< the FigureSpec name, also the anchor of its figure
+  std::string figure;  ///< the FigureSpec name, also the anchor of its figure
   std::string title;
   std::string sweep_dir;      ///< e.g. "sweeps/adaptive_ps025_m15" (holds runs.csv)
   std::string scenario_file;  ///< the map's scenario as its sweep ran it

@@ -51,7 +51,6 @@ const char* kVirtualRig =
     "exponents and maps, and what this rig does not reach) is in the repository's "
     "<code>docs/notes/virtual_rig.md</code>; the full scenario is at the end of this page.</p>\n";
 
-
 // The maps' explorer, filled by report.js from report_data.js (both beside index.html).
 const char* kExplore =
     "<h2 id=\"explore-maps\">Explore the maps</h2>\n<p>The four incidence maps of Figs. 4-6 "
@@ -114,8 +113,7 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "<link rel=\"stylesheet\" href=\"report.css\"></head><body>\n"
       "<h1>An analytical and experimental study of chaotic oscillation in a pneumatic cylinder: "
       "the claims tested &mdash; " +
-      escape(headline.substr(0, headline.find(" ("))) +
-      "</h1>\n<p><b>" + escape(headline) +
+      escape(headline.substr(0, headline.find(" ("))) + "</h1>\n<p><b>" + escape(headline) +
       ".</b> Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
       (rig_source.empty() ? std::string("its built-in virtual rig") : escape(rig_source)) +
       "; each claim quotes the paper, says how we read it and is judged by a "

@@ -10,19 +10,19 @@
 #include <optional>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/simulate/model_lyapunov.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
+#include "pneumachaos/sweep/sweep_runner.hpp"
+#include "progress.hpp"
 #include "report/example_run.hpp"
 #include "report/figures.hpp"
 #include "report/report_assets.hpp"
 #include "report/report_data.hpp"
-#include "pneumachaos/stability/stability_analysis.hpp"
-#include "progress.hpp"
-#include "pneumachaos/simulate/model_lyapunov.hpp"
-#include "pneumachaos/simulate/simulate.hpp"
-#include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -286,8 +286,7 @@ class ReportBuilder {
       // The built-in rig is reached to the last bit from the defaults with --set; a rig of the
       // user's through its scenario as printed (15 digits: the runs again, to rounding).
       keep_map_data({c.name, c.title, sweep_dir, toml,
-                     o_.rig ? toml : set_arguments(default_scenario(), s.base), s,
-                     maps_.back()});
+                     o_.rig ? toml : set_arguments(default_scenario(), s.base), s, maps_.back()});
     }
   }
 
