@@ -112,7 +112,11 @@ std::string report_data_js(const std::vector<MapData>& maps, const std::vector<C
   for (const MapData& m : maps) j["maps"].push_back(map_json(m, report_dir));
   j["claims"] = Json::array();
   for (const Claim& c : claims)
-    j["claims"].push_back({{"id", c.id}, {"figure", c.figure}, {"cells", c.cells}});
+    j["claims"].push_back({{"id", c.id},
+                           {"figure", c.figure},
+                           {"verdict", c.verdict},
+                           {"ours", c.ours},
+                           {"cells", c.cells}});
   return "window.PNEUMACHAOS_REPORT = " + j.dump() + ";\n";
 }
 

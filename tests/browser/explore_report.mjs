@@ -100,6 +100,9 @@ async function checkClaim(page) {
     fail(`${id} marks ${named.join()}; the border is ${border.join()}`);
   const claimed = await page.$eval(`#explore-${figure}`, (e) => e.classList.contains('claimed'));
   if (!claimed) fail(`${id}'s map is not highlighted`);
+  // And back: the map lists the claim, linked to its row.
+  const back = await page.$$eval(`#explore-${figure} .mapclaims a`, (a) => a.map((e) => e.hash));
+  if (!back.includes(`#claim-${id}`)) fail(`the ${figure} map does not list ${id}: ${back}`);
   console.log(`claim ${id}: ${named.length} border cells marked`);
 }
 

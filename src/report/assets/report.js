@@ -129,7 +129,8 @@
       ? '; inferred by the adaptive map from its cell: no run of its own (a command below runs one)'
       : '') + `. All columns: ${map.sweep}/runs.csv (surrogate rank: the maps run no surrogate test).`));
     if (cell.rows.length) panel.appendChild(runTable(map, cell));
-    panel.appendChild(el('p', {}, 'Each run again, alone, from this folder:'));
+    panel.appendChild(el('p', {},
+      'Each run again, alone (a scenario file it names is in figures/, beside this page):'));
     for (let r = 0; r < map.repeats; ++r) {
       panel.appendChild(el('pre', { class: 'replay' },
         `${map.replay} --replay ${cell.point}:${r} -o run_${cell.point}_${r}.csv`));
@@ -182,6 +183,19 @@
     });
   }
 
+  // Under each map, the claims read from it, their verdict and numbers (the false-positive
+  // allowance among them), each linked to its row of the claims table.
+  function mapClaims(map) {
+    const list = el('ul', { class: 'mapclaims' });
+    (data.claims || []).filter((c) => c.figure === map.figure).forEach((c) => {
+      const li = el('li');
+      li.appendChild(el('a', { href: `#claim-${c.id}` }, c.id));
+      li.appendChild(document.createTextNode(`: ${c.verdict} (${c.ours})`));
+      list.appendChild(li);
+    });
+    return list;
+  }
+
   function build() {
     const root = document.getElementById('explore');
     if (!root || !data) return;
@@ -192,6 +206,7 @@
       const box = el('div', { class: 'mapbox', id: `explore-${map.figure}` });
       box.appendChild(el('h3', {}, map.title));
       box.appendChild(drawMap(map, k));
+      box.appendChild(mapClaims(map));
       maps.appendChild(box);
     });
     root.appendChild(maps);
