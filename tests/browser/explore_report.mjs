@@ -69,7 +69,8 @@ async function checkCell(page) {
     for (const col of ['repeat', 'seed', 'regime', 'lambda_per_s', 'lambda_uncertainty_per_s',
       'zero_one_K']) {
       if (!rows[k] || rows[k][col] !== r[col])
-        fail(`run ${point}:${r.repeat} ${col}: panel ${rows[k] && rows[k][col]}, runs.csv ${r[col]}`);
+        fail(`run ${point}:${r.repeat} ${col}: panel ${rows[k] && rows[k][col]}, ` +
+          `runs.csv ${r[col]}`);
     }
   });
   const commands = await page.$$eval('#panel pre.replay', (p) => p.map((e) => e.textContent));

@@ -58,7 +58,8 @@
       g.appendChild(svg('rect', {
         x: PAD + i * CELL + 1, y: 4 + (map.y.length - 1 - j) * CELL + 1,
         width: CELL - 2, height: CELL - 2, fill: `rgb(${grey},${grey},${grey})`,
-        class: (cell.stick_slip >= 0.5 ? 'ss' : '') + (cell.chaos === 0 && !cell.inferred ? ' calm' : ''),
+        class: (cell.stick_slip >= 0.5 ? 'ss' : '') +
+          (cell.chaos === 0 && !cell.inferred ? ' calm' : ''),
       }));
       if (cell.inferred) {
         g.appendChild(svg('circle', { cx: PAD + (i + 0.5) * CELL,
@@ -94,7 +95,9 @@
         col(name) < 0 ? 'not run' : r[col(name)])));
       const ev = el('td', { class: 'evidence' });
       EVIDENCE.forEach(([name, h]) => {
-        if (col(name) >= 0 && r[col(name)] !== '') ev.appendChild(el('div', {}, `${h}: ${r[col(name)]}`));
+        if (col(name) >= 0 && r[col(name)] !== '') {
+          ev.appendChild(el('div', {}, `${h}: ${r[col(name)]}`));
+        }
       });
       tr.appendChild(ev);
       t.appendChild(tr);
@@ -127,7 +130,8 @@
     panel.appendChild(el('p', {}, `${cell.runs} runs, ${cell.failed} failed; chaos ` +
       `${pct(cell.chaos)}, stick-slip ${pct(cell.stick_slip)}` + (cell.inferred
       ? '; inferred by the adaptive map from its cell: no run of its own (a command below runs one)'
-      : '') + `. All columns: ${map.sweep}/runs.csv (surrogate rank: the maps run no surrogate test).`));
+      : '') + `. All columns: ${map.sweep}/runs.csv ` +
+      '(surrogate rank: the maps run no surrogate test).'));
     if (cell.rows.length) panel.appendChild(runTable(map, cell));
     panel.appendChild(el('p', {},
       'Each run again, alone (a scenario file it names is in figures/, beside this page):'));
