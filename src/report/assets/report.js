@@ -6,7 +6,7 @@
   'use strict';
   const data = window.PNEUMACHAOS_REPORT;
   const SVG = 'http://www.w3.org/2000/svg';
-  const CELL = 34, PAD = 58;
+  const PAD = 58;
   // runs.csv columns the panel shows, with their headings; the rest stay in runs.csv.
   const RUN_COLUMNS = [
     ['repeat', 'repeat'], ['seed', 'seed'], ['regime', 'verdict'],
@@ -48,6 +48,10 @@
   }
 
   function drawMap(map, index) {
+    // Cells of 34 px, smaller on a large grid (the paper's 26 x 30) so two maps fit side by
+    // side; the tick labels thinned to fit.
+    const CELL = Math.max(12, Math.min(34, Math.floor(560 / Math.max(map.x.length, map.y.length))));
+    const every = (px) => Math.ceil(px / CELL);
     const w = PAD + CELL * map.x.length + 8, h = PAD + CELL * map.y.length + 8;
     const s = svg('svg', { width: w, height: h, viewBox: `0 0 ${w} ${h}`, class: 'map' });
     map.cells.forEach((cell) => {
@@ -63,13 +67,18 @@
       }));
       if (cell.inferred) {
         g.appendChild(svg('circle', { cx: PAD + (i + 0.5) * CELL,
-          cy: 4 + (map.y.length - 0.5 - j) * CELL, r: 3, class: 'inferred' }));
+          cy: 4 + (map.y.length - 0.5 - j) * CELL, r: Math.min(3, CELL / 6), class: 'inferred' }));
       }
       s.appendChild(g);
     });
-    map.x.forEach((v, i) => s.appendChild(label(PAD + (i + 0.5) * CELL, h - 20, v, 'middle')));
-    map.y.forEach((v, j) =>
-      s.appendChild(label(PAD - 4, 4 + (map.y.length - 0.5 - j) * CELL + 4, v, 'end')));
+    map.x.forEach((v, i) => {
+      if (i % every(30) === 0) s.appendChild(label(PAD + (i + 0.5) * CELL, h - 20, v, 'middle'));
+    });
+    map.y.forEach((v, j) => {
+      if (j % every(12) === 0) {
+        s.appendChild(label(PAD - 4, 4 + (map.y.length - 0.5 - j) * CELL + 4, v, 'end'));
+      }
+    });
     s.appendChild(label(PAD + CELL * map.x.length / 2, h - 4, map.axes[0], 'middle'));
     const y = label(0, 0, map.axes[1], 'middle');
     y.setAttribute('transform', `translate(12 ${4 + CELL * map.y.length / 2}) rotate(-90)`);
