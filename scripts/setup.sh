@@ -19,6 +19,19 @@ packages=(
   python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 )
 
+# The browser tests' driver (tests/browser/package-lock.json pins puppeteer-core) drives the
+# chromium above: no browser download. Installed again only when the lock file changes.
+browser_tests() {
+  local dir stamp
+  dir=$(cd "$(dirname "$0")/../tests/browser" && pwd)
+  stamp=$dir/node_modules/.package-lock.json
+  command -v npm >/dev/null || { echo "setup: npm not found: the browser tests will be skipped" >&2; return 0; }
+  [ -f "$stamp" ] && [ "$stamp" -nt "$dir/package-lock.json" ] && return 0
+  echo "setup: npm ci in tests/browser (puppeteer-core, no browser download)" >&2
+  (cd "$dir" && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+}
+browser_tests
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -38,6 +38,19 @@ TEST(MapRules, ChaosNextToTheBorderAgreesAndFarFromItFails) {
   EXPECT_FALSE(chaos_highest_near_border(far.pts, far.grid).passes());
 }
 
+// The cells the report marks for the border rule: rows 1 and 2 of every column (either side of
+// a border between rows 1 and 2), no others; and the points a count rule counted.
+TEST(MapRules, TheBorderPointsAreBothSidesOfTheBorder) {
+  const auto m = make_map(3, 5, 2, [](auto i, auto j) { return i == 0 && j == 4 ? 1.0 : 0.0; });
+  EXPECT_EQ(stick_slip_border_points(m.pts, m.grid),
+            (std::vector<std::size_t>{1, 2, 6, 7, 11, 12}));
+  SweepSummary s;
+  s.per_point = m.pts;
+  EXPECT_EQ(points_where(s, [](const PointSummary& p) { return p.chaos_incidence > 0; }),
+            (std::vector<std::size_t>{4}));
+  EXPECT_TRUE(stick_slip_border_points(m.pts, MapGrid{}).empty());  // no grid, no cells
+}
+
 // Misreading: a "near" that reaches two S2 rows from a border; two steps away is not the
 // neighbourhood of one grid step.
 TEST(MapRules, TwoStepsFromTheBorderIsNotNearIt) {

@@ -251,6 +251,24 @@ TEST(Claims, Fig2PanelsAreLabelledAsThePapers) {
   EXPECT_LT(a, b);
 }
 
+// Fig. 2: a record that stops before the 3 s asked says why (the stroke end); a full one says
+// nothing.
+TEST(Report, TimeResponsesSayWhichLineStopsShort) {
+  const auto record = [](double seconds) {
+    TimeSeries t(100.0);
+    t.add_channel("v", "m/s",
+                  std::vector<double>(static_cast<std::size_t>(100 * seconds) + 1, 0.1));
+    return t;
+  };
+  const FigureSpec f =
+      time_responses_figure({{"S2 = 0.2 mm^2", record(3.0)}}, {{"S1 = 0.6 mm^2", record(1.9)}});
+  EXPECT_NE(f.caption.find("In (b), S1 = 0.6 mm^2 ends at 1.9 s: the piston reached the stroke "
+                           "end."),
+            std::string::npos)
+      << f.caption;
+  EXPECT_EQ(f.caption.find("In (a)"), std::string::npos) << f.caption;
+}
+
 // An adaptive map's figure marks its inferred points; a full map's figure has no such marks.
 TEST(Report, IncidenceMapMarksInferredPoints) {
   SweepSpec spec;
@@ -263,16 +281,23 @@ TEST(Report, IncidenceMapMarksInferredPoints) {
     s.per_point.push_back(ps);
   }
   const FigureSpec full = incidence_map_figure("m", "t", spec, s);
-  EXPECT_EQ(full.data.size(), 2u);
+  EXPECT_EQ(full.data.size(), 3u);
   EXPECT_EQ(full.plot.find("inferred"), std::string::npos);
   s.per_point[3].inferred = true;
   s.inferred_points = 1;
   const FigureSpec adaptive = incidence_map_figure("m", "t", spec, s);
-  ASSERT_EQ(adaptive.data.size(), 3u);
-  EXPECT_EQ(adaptive.data[2].first, "m_inferred.dat");
-  EXPECT_NE(adaptive.data[2].second.find("\n2.5 0.2\n"), std::string::npos)
-      << adaptive.data[2].second;
+  ASSERT_EQ(adaptive.data.size(), 4u);
+  EXPECT_EQ(adaptive.data[3].first, "m_inferred.dat");
+  EXPECT_NE(adaptive.data[3].second.find("\n2.5 0.2\n"), std::string::npos)
+      << adaptive.data[3].second;
   EXPECT_NE(adaptive.plot.find("'m_inferred.dat' using 1:2 with points"), std::string::npos);
+  // The legend names every mark; the points run without chaos are marked, the inferred not.
+  EXPECT_NE(adaptive.plot.find("set key below"), std::string::npos);
+  EXPECT_NE(adaptive.plot.find("title 'inferred, not run'"), std::string::npos);
+  EXPECT_NE(adaptive.plot.find("title 'run, no chaos'"), std::string::npos);
+  EXPECT_EQ(adaptive.data[2].first, "m_calm.dat");
+  EXPECT_NE(adaptive.data[2].second.find("\n2.5 0.05\n"), std::string::npos);
+  EXPECT_EQ(adaptive.data[2].second.find("2.5 0.2"), std::string::npos);
   EXPECT_NE(adaptive.caption.find("1 of the 4 points were not run"), std::string::npos);
 }
 

@@ -77,6 +77,7 @@ std::vector<Claim> location(const ClaimInputs& in) {
                                 "positives give: where they lie says nothing of the chaos"};
   const bool real = chaos_beyond_false_positives(*in.base);
   judge(border, real ? chaos_highest_near_border(pts, in.grid) : within);
+  border.cells = stick_slip_border_points(pts, in.grid);
   judge(s1, real ? chaos_highest_where_s1_above_s2(pts, in.grid) : within);
   RuleResult r{kNaN, "no map has chaos beyond what the verdict's false positives give"};
   std::string ours;
@@ -174,6 +175,8 @@ std::vector<Claim> load(const ClaimInputs& in) {
     judge(grows, region_grows(in.base->stick_slip_points, in.double_m->stick_slip_points));
     few.ours = fmt::format("{} points chaotic in every run", in.double_m->chaos_full_points);
     judge(few, a_few_points(in.double_m->chaos_full_points, in.double_m->points));
+    few.cells = points_where(
+        *in.double_m, [](const PointSummary& p) { return chaos_class(p) == ChaosClass::kAll; });
   } else {
     grows = not_reproduced(grows, "maps missing");
     few = not_reproduced(few, "maps missing");
@@ -183,6 +186,8 @@ std::vector<Claim> load(const ClaimInputs& in) {
                 fmt::format("; {} points chaotic at least once", in.triple_m->chaos_any_points);
     judge(none, no_chaos_beyond_false_positives(chaotic_runs(*in.triple_m),
                                                 judged_runs(*in.triple_m)));
+    none.cells = points_where(
+        *in.triple_m, [](const PointSummary& p) { return chaos_class(p) != ChaosClass::kNone; });
   } else {
     none = not_reproduced(none, "map missing");
   }

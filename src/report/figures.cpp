@@ -37,6 +37,20 @@ std::string plot_columns(const std::string& file, const std::vector<LabelledReco
   return out;
 }
 
+// The records of a panel that end before `asked_s`: a run stops at the stroke end, and a line
+// that stops short must say why.
+std::string early_ends(const std::vector<LabelledRecord>& records, const char* panel,
+                       double asked_s) {
+  std::string out;
+  for (const auto& r : records) {
+    const double end_s = static_cast<double>(r.series.size() - 1) / r.series.rate_Hz();
+    if (end_s < asked_s - 1.5 / r.series.rate_Hz())
+      out += fmt::format(" In ({}), {} ends at {:.1f} s: the piston reached the stroke end.", panel,
+                         r.label, end_s);
+  }
+  return out;
+}
+
 }  // namespace
 
 FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
@@ -47,7 +61,8 @@ FigureSpec time_responses_figure(const std::vector<LabelledRecord>& meter_out,
       "Fig. 2: velocity responses of the paper's model (one rigid mass, eq. (4) friction) after "
       "the valve switches, under its own assumptions: (a) meter-out with the supply valve open "
       "wide (P1 = Ps, Section 3.2), (b) meter-in with the rod side open to atmosphere "
-      "(Section 3.3).";
+      "(Section 3.3)." +
+      early_ends(meter_out, "a", 3.0) + early_ends(meter_in, "b", 3.0);
   f.data = {{"fig2_meter_out.dat", records_table(meter_out, 3.0)},
             {"fig2_meter_in.dat", records_table(meter_in, 3.0)}};
   f.height = 640;
@@ -148,17 +163,51 @@ FigureSpec stability_map_figure(const StabilityMap& map) {
       scale, beyond);
   f.data = {{"stability_map.dat", table}};
   f.plot =
-      "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]'\n"
+      "set xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\nset cblabel 'largest real part [1/s]' "
+      "offset 2,0\n"
       "set palette defined (-1 'blue', 0 'white', 1 'red')\n" +
       fmt::format("set cbrange [-{0}:{0}]\n", scale) +
       "set title 'Stability of the steady motion: largest real part of the eigenvalues'\n"
       "set view map\nset key off\n"
       "plot 'stability_map.dat' using 1:2:3 with image, '' using 1:($3 != $3 ? $2 : 1/0) "
       "with points pt 2 lc 'black', " +
-      fmt::format("'' using 1:(abs($3) > {} ? $2 : 1/0) with points pt 6 ps 0.6 lc 'black'",
-                  scale);
+      fmt::format("'' using 1:(abs($3) > {} ? $2 : 1/0) with points pt 6 ps 0.6 lc 'black'", scale);
   return f;
 }
+
+namespace {
+
+// The data layers of an incidence map: the grey image, the stick-slip outlines, the inferred
+// points and the evaluated points without chaos (marked, so a white cell that was run is told
+// from one that was not).
+struct MapLayers {
+  std::string grid = "# S1[mm^2] S2[mm^2] chaos_incidence stick_slip_incidence\n";
+  std::string outline = "# stick-slip cells (outlined): x y dx dy, one edge per line\n";
+  std::string inferred = "# points inferred from their cell, not run (adaptive map): x y\n";
+  std::string calm = "# points run, no run chaotic: x y\n";
+  std::size_t both = 0;  ///< cells chaotic at least once and stick-slip
+};
+
+MapLayers map_layers(const SweepSummary& summary, std::size_t n2, double d1, double d2) {
+  MapLayers l;
+  for (std::size_t i = 0; i < summary.per_point.size(); ++i) {
+    const auto& p = summary.per_point[i];
+    const double x = p.coordinates[0], y = p.coordinates[1];
+    l.grid += fmt::format("{} {} {} {}\n", x, y, p.chaos_incidence, p.stick_slip_incidence);
+    if ((i + 1) % n2 == 0) l.grid += "\n";
+    if (p.inferred) l.inferred += fmt::format("{} {}\n", x, y);
+    if (!p.inferred && p.chaos_incidence == 0.0) l.calm += fmt::format("{} {}\n", x, y);
+    if (p.stick_slip_incidence < 0.5) continue;
+    if (p.chaos_incidence > 0.0) ++l.both;
+    // An outline inset into the cell, not a fill: the grey of the chaos incidence stays visible.
+    const double x0 = x - 0.42 * d1, y0 = y - 0.42 * d2, w = 0.84 * d1, h = 0.84 * d2;
+    l.outline += fmt::format("{0} {1} {2} 0\n{0} {1} 0 {3}\n{4} {1} 0 {3}\n{0} {5} {2} 0\n", x0, y0,
+                             w, h, x0 + w, y0 + h);
+  }
+  return l;
+}
+
+}  // namespace
 
 FigureSpec incidence_map_figure(const std::string& name, const std::string& title,
                                 const SweepSpec& spec, const SweepSummary& summary) {
@@ -166,54 +215,43 @@ FigureSpec incidence_map_figure(const std::string& name, const std::string& titl
   const auto& s2 = spec.axes[1].values;
   const double d1 = s1.size() > 1 ? s1[1] - s1[0] : 0.05;
   const double d2 = s2.size() > 1 ? s2[1] - s2[0] : 0.15;
-  std::string grid = "# S1[mm^2] S2[mm^2] chaos_incidence stick_slip_incidence\n";
-  std::string outline = "# stick-slip cells (outlined): x y dx dy, one edge per line\n";
-  std::string inferred = "# points inferred from their cell, not run (adaptive map): x y\n";
-  std::size_t both = 0;
-  for (std::size_t i = 0; i < summary.per_point.size(); ++i) {
-    const auto& p = summary.per_point[i];
-    grid += fmt::format("{} {} {} {}\n", p.coordinates[0], p.coordinates[1], p.chaos_incidence,
-                        p.stick_slip_incidence);
-    if ((i + 1) % s2.size() == 0) grid += "\n";
-    if (p.inferred) inferred += fmt::format("{} {}\n", p.coordinates[0], p.coordinates[1]);
-    if (p.stick_slip_incidence < 0.5) continue;
-    if (p.chaos_incidence > 0.0) ++both;
-    // An outline inset into the cell, not a fill: the grey of the chaos incidence stays visible.
-    const double x0 = p.coordinates[0] - 0.42 * d1, y0 = p.coordinates[1] - 0.42 * d2;
-    const double w = 0.84 * d1, h = 0.84 * d2;
-    outline += fmt::format("{0} {1} {2} 0\n{0} {1} 0 {3}\n{4} {1} 0 {3}\n{0} {5} {2} 0\n", x0,
-                           y0, w, h, x0 + w, y0 + h);
-  }
+  const MapLayers l = map_layers(summary, s2.size(), d1, d2);
   FigureSpec f;
   f.name = name;
   f.caption = fmt::format(
       "{}: each cell is one (S1, S2) point of the grid; its grey is the share of its {} runs "
       "judged chaotic (white 0 %, black 100 %); a red outline marks stick-slip in at least half "
-      "of its runs ({} cells are both chaotic at least once and stick-slip). Left: the paper's "
-      "full grid; right: the same map zoomed to S2 < 0.7 mm^2, where the regimes change.",
-      title, spec.repeats, both);
-  f.data = {{name + ".dat", grid}, {name + "_stick_slip.dat", outline}};
+      "of its runs ({} cells are both chaotic at least once and stick-slip); a small grey "
+      "circle marks a point run with no chaotic run. Left: the paper's full grid; right: the "
+      "same map zoomed to S2 < 0.7 mm^2, where the regimes change.",
+      title, spec.repeats, l.both);
+  f.data = {
+      {name + ".dat", l.grid}, {name + "_stick_slip.dat", l.outline}, {name + "_calm.dat", l.calm}};
   f.width = 1200;
-  f.height = 560;
+  f.height = 600;
   std::string layers = fmt::format(
-      "plot '{0}.dat' using 1:2:3 with image, '{0}_stick_slip.dat' using 1:2:3:4 with vectors "
-      "nohead lc '#d62728' lw 1.5",
+      "plot '{0}.dat' using 1:2:3 with image notitle, '{0}_stick_slip.dat' using 1:2:3:4 with "
+      "vectors nohead lc '#d62728' lw 1.5 title 'stick-slip (half of the runs or more)', "
+      "'{0}_calm.dat' using 1:2 with points pt 6 ps 0.7 lc 'gray40' title 'run, no chaos'",
       name);
   if (summary.inferred_points > 0) {  // an adaptive map: say which cells were not run
     f.caption += fmt::format(
         " Adaptive map: {} of the {} points were not run but inferred from the evaluated "
         "corners of their cell (docs/sweep.md, \"Adaptive maps\"); a small blue dot marks each.",
         summary.inferred_points, summary.per_point.size());
-    f.data.emplace_back(name + "_inferred.dat", inferred);
-    layers += fmt::format(", '{}_inferred.dat' using 1:2 with points pt 7 ps 0.3 lc '#1f77b4'",
-                          name);
+    f.data.emplace_back(name + "_inferred.dat", l.inferred);
+    layers += fmt::format(
+        ", '{}_inferred.dat' using 1:2 with points pt 7 ps 0.5 lc '#1f77b4' "
+        "title 'inferred, not run'",
+        name);
   }
   layers += "\n";
   f.plot = fmt::format(
       "set multiplot layout 1,2 title '{}'\nset xlabel 'S1 [mm^2]'\nset ylabel 'S2 [mm^2]'\n"
-      "set cblabel 'chaos incidence'\nset palette gray negative\nset cbrange [0:1]\n"
-      "set xrange [{}:{}]\nset key off\nset title 'full grid'\nset yrange [{}:{}]\n{}"
-      "set title 'zoom: S2 < 0.7 mm^2'\nset yrange [{}:0.7]\n{}unset multiplot",
+      "set cblabel 'chaos incidence (share of runs)' offset 1,0\nset palette gray negative\n"
+      "set cbrange [0:1]\nset xrange [{}:{}]\nset key below horizontal\nset title 'full grid'\n"
+      "set yrange [{}:{}]\n{}set title 'zoom: S2 < 0.7 mm^2'\nset yrange [{}:0.7]\n{}"
+      "unset multiplot",
       title, s1.front() - d1 / 2, s1.back() + d1 / 2, s2.front() - d2 / 2, s2.back() + d2 / 2,
       layers, s2.front() - d2 / 2, layers);
   return f;
@@ -266,8 +304,11 @@ FigureSpec fig7b_indices(double rate_Hz, const AnalysisResult& a,
   f.caption =
       "Fig. 7b: power spectrum, autocorrelation and the convergence of the maximum "
       "Lyapunov exponent: Wolf's running estimate from the record, the model's own (two "
-      "nearby model states, renormalised) and the slope of the record's divergence curve "
-      "(dashed). They are three estimators of one exponent and need not agree closely: the "
+      "nearby model states, renormalised) and the slope of the record's divergence curve " +
+      std::string(a.divergence.found_linear_region
+                      ? "(dashed)."
+                      : "(not drawn: this record's divergence curve has no linear region).") +
+      " They are three estimators of one exponent and need not agree closely: the "
       "record-based two see only the velocity, through a delay embedding of a finite record; "
       "the model's follows two nearby trajectories of the equations themselves and is the "
       "most direct.";
@@ -301,7 +342,7 @@ FigureSpec fig7b_indices(double rate_Hz, const AnalysisResult& a,
       "unset logscale y\nset xrange [*:*]\nset title 'autocorrelation'\nset xlabel 'lag [s]'\n"
       "set ylabel 'r'\nplot 'fig7b_acf.dat' using 1:2 with lines, 0 lc 'gray'\n"
       "set title 'maximum Lyapunov exponent'\nset xlabel 'time [s]'\nset ylabel '1/s'\n"
-      "set key below\nset yrange [{}:{}]\n"
+      "set key top right opaque\nset yrange [{}:{}]\n"
       "plot 'fig7b_wolf.dat' using 1:2 with lines title 'Wolf (running)', 'fig7b_model.dat' "
       "using 1:2 with lines title 'model (running)'{}\nunset multiplot",
       lyapunov_panel_range(a.wolf.running_per_s, model_running)[0],

@@ -63,11 +63,26 @@ double centre_margin(const std::vector<PointSummary>& pts, const MapGrid& g, boo
 
 }  // namespace
 
+std::vector<std::size_t> stick_slip_border_points(const std::vector<PointSummary>& pts,
+                                                  const MapGrid& g) {
+  std::vector<std::size_t> out;
+  if (!grid_fits(pts, g)) return out;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (near_border(pts, g.s1.size(), g.s2.size(), i)) out.push_back(i);
+  return out;
+}
+
+std::vector<std::size_t> points_where(const SweepSummary& s, bool (*keep)(const PointSummary&)) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < s.per_point.size(); ++i)
+    if (keep(s.per_point[i])) out.push_back(i);
+  return out;
+}
+
 RuleResult chaos_highest_near_border(const std::vector<PointSummary>& pts, const MapGrid& g) {
   if (!grid_fits(pts, g)) return {kNaN, "no map"};
   std::vector<bool> near(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    near[i] = near_border(pts, g.s1.size(), g.s2.size(), i);
+  for (std::size_t i : stick_slip_border_points(pts, g)) near[i] = true;
   return compare_means(pts, near, "near the stick-slip border", "elsewhere");
 }
 

@@ -51,6 +51,15 @@ const char* kVirtualRig =
     "exponents and maps, and what this rig does not reach) is in the repository's "
     "<code>docs/notes/virtual_rig.md</code>; the full scenario is at the end of this page.</p>\n";
 
+// The maps' explorer, filled by report.js from report_data.js (both beside index.html).
+const char* kExplore =
+    "<h2 id=\"explore-maps\">Explore the maps</h2>\n<p>The four incidence maps of Figs. 4-6 "
+    "and the 4.5 kg condition, cell by cell: hover a cell for its runs' verdicts, click it for "
+    "its runs (the numbers of the map's <code>runs.csv</code>) and the command that runs each "
+    "again alone. A claim's figure link above leads here and marks the cells its rule read. "
+    "The figures below are the same maps for print.</p>\n<div id=\"explore\"><noscript>The "
+    "explorer needs JavaScript; the figures and <code>sweeps/*/runs.csv</code> hold the same "
+    "data.</noscript></div>\n";
 
 std::string claims_table(const std::vector<Claim>& claims) {
   std::string h =
@@ -100,11 +109,11 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:.35em .6em;"
       "vertical-align:top}\n.agrees{background:#e3f4e3}.disagrees{background:#fbe3e3}"
       ".not{background:#f1f1f1}\nfigure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}\n"
-      "pre{background:#f6f6f6;padding:1em;overflow:auto;font-size:85%}\n</style></head><body>\n"
+      "pre{background:#f6f6f6;padding:1em;overflow:auto;font-size:85%}\n</style>\n"
+      "<link rel=\"stylesheet\" href=\"report.css\"></head><body>\n"
       "<h1>An analytical and experimental study of chaotic oscillation in a pneumatic cylinder: "
       "the claims tested &mdash; " +
-      escape(headline.substr(0, headline.find(" ("))) +
-      "</h1>\n<p><b>" + escape(headline) +
+      escape(headline.substr(0, headline.find(" ("))) + "</h1>\n<p><b>" + escape(headline) +
       ".</b> Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
       (rig_source.empty() ? std::string("its built-in virtual rig") : escape(rig_source)) +
       "; each claim quotes the paper, says how we read it and is judged by a "
@@ -117,7 +126,7 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "sentences later, an extension): that row shows both sentences and is not scored; the "
       "chaos, on which both sentences agree, is. A rule that no plausible model could fail is "
       "marked <em>identity</em> and not scored either.</p>\n" +
-      claims_table(claims);
+      claims_table(claims) + kExplore;
   h += "<h2>Figures</h2>\n<p>Each figure's data, its gnuplot commands "
        "(<code>NAME_plot.gp</code>) and the driver that renders PNG and SVG "
        "(<code>gnuplot NAME.gp</code>) are in <code>figures/</code>.</p>\n";
@@ -133,7 +142,9 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
   h += "<h2>The scenario of the maps</h2>\n<p>Fig. 4's scenario, as the sweeps ran it (Figs. "
        "5 and 6 change only Ps or m; the example and Figs. 3 and 7 run it without scatter or "
        "texture).</p>\n<pre>" +
-       escape(scenario_toml) + "</pre>\n</body></html>\n";
+       escape(scenario_toml) +
+       "</pre>\n<script src=\"report_data.js\"></script>\n"
+       "<script src=\"report.js\"></script>\n</body></html>\n";
   return h;
 }
 

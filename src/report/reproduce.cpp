@@ -10,17 +10,19 @@
 #include <optional>
 
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
+#include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
-#include "report/example_run.hpp"
-#include "report/figures.hpp"
-#include "pneumachaos/stability/stability_analysis.hpp"
-#include "progress.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/stability_analysis.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
+#include "progress.hpp"
+#include "report/example_run.hpp"
+#include "report/figures.hpp"
+#include "report/report_assets.hpp"
+#include "report/report_data.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -269,8 +271,9 @@ class ReportBuilder {
       s.base.set_total_moving_mass(c.m_kg);
       SweepOptions so;
       // Adaptive and full maps keep their own folders, so either resumes its own sweeps.
-      so.out_dir = o_.out_dir + "/sweeps/" + (o_.full_maps ? "" : "adaptive_") +
-                   c.name.substr(c.name.find("map_") + 4);
+      const std::string sweep_dir = "sweeps/" + std::string(o_.full_maps ? "" : "adaptive_") +
+                                    c.name.substr(c.name.find("map_") + 4);
+      so.out_dir = o_.out_dir + "/" + sweep_dir;
       so.threads = o_.threads;
       so.progress = o_.progress;
       so.on_progress = [this](std::size_t done, std::size_t) { stage_.sweep_runs(done); };
@@ -279,6 +282,11 @@ class ReportBuilder {
       maps_.push_back(run_sweep(s, so));
       stage_.runs_done(maps_.back().runs);
       add(incidence_map_figure(c.name, c.title, s, maps_.back()));
+      const std::string toml = "figures/" + c.name + "_scenario.toml";
+      // The built-in rig is reached to the last bit from the defaults with --set; a rig of the
+      // user's through its scenario as printed (15 digits: the runs again, to rounding).
+      keep_map_data({c.name, c.title, sweep_dir, toml,
+                     o_.rig ? toml : set_arguments(default_scenario(), s.base), s, maps_.back()});
     }
   }
 
@@ -295,6 +303,9 @@ class ReportBuilder {
     claims_.sign_rule = sign_rule_counts(smap_, maps_[0]);
     result_.claims = evaluate_claims(claims_);
     write_file(o_.out_dir + "/claims.json", claims_json(result_.claims));
+    write_file(o_.out_dir + "/report_data.js",
+               report_data_js(map_data_, result_.claims, o_.out_dir));
+    write_report_assets(o_.out_dir);
     result_.index_html = (std::filesystem::path(o_.out_dir) / "index.html").string();
     write_file(result_.index_html,
                report_html(result_.figures, result_.claims, scenario_to_toml(spec_.base),
@@ -304,6 +315,12 @@ class ReportBuilder {
 
  private:
   void add(const FigureSpec& spec) { result_.figures.push_back(render_figure(spec, fig_dir_)); }
+  // A map for the page's explorer, with the scenario its sweep ran, so that `sweep --replay`
+  // from the report folder runs any of its runs again.
+  void keep_map_data(MapData m) {
+    write_file(o_.out_dir + "/" + m.scenario_file, scenario_to_toml(m.spec.base));
+    map_data_.push_back(std::move(m));
+  }
   static void write_file(const std::string& path, const std::string& text) {
     AtomicFile f(path);
     f.stream() << text;
@@ -356,6 +373,7 @@ class ReportBuilder {
   SimulationResult example_;
   StabilityMap smap_;
   std::vector<SweepSummary> maps_;
+  std::vector<MapData> map_data_;
 };
 
 }  // namespace

@@ -133,6 +133,11 @@ struct MapGrid {
 /// of the border (a point whose stick-slip class differs from one of its four neighbours) is
 /// above that of the other points. Margin: (near - far) / (near + far).
 RuleResult chaos_highest_near_border(const std::vector<PointSummary>& pts, const MapGrid& g);
+/// The points that rule reads as near the border, in grid order (the report marks them).
+std::vector<std::size_t> stick_slip_border_points(const std::vector<PointSummary>& pts,
+                                                  const MapGrid& g);
+/// The points of a map that `keep` accepts, in grid order (the cells a count rule counted).
+std::vector<std::size_t> points_where(const SweepSummary& s, bool (*keep)(const PointSummary&));
 /// "the rate is highest in the range of S1 > S2": mean incidence where S1 > S2 above that
 /// where S1 <= S2 (not evaluated when the grid has no point on one side).
 RuleResult chaos_highest_where_s1_above_s2(const std::vector<PointSummary>& pts,

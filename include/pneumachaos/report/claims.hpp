@@ -43,6 +43,8 @@ struct Claim {
   std::string verdict;  ///< one of the names above
   double margin = kNaN;  ///< signed, dimensionless; >= 0 passes; NaN: not evaluated
   std::string why;       ///< for a row that does not agree: one sentence
+  /// The grid points of `figure`'s map the rule read (its border cells), where it names any.
+  std::vector<std::size_t> cells;
   [[nodiscard]] bool scored() const { return verdict != kIdentity && verdict != kContradictory; }
 };
 
