@@ -8,6 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/jacobian_output.hpp"
+#include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/jacobian_exponents.hpp"
@@ -133,6 +135,27 @@ TEST(JacobianExponents, BadOptionsAndShortRecordsAreRefused) {
   refused(x, zero, "dimension and delay");
   // The shortest record accepted gives a value.
   EXPECT_NO_THROW(jacobian_exponents(std::span(x).first(2000), 100.0, o));
+}
+
+// `analyze` runs the estimator only when asked, on its own embedding, and compares the two
+// exponents: on Lorenz both are near 0.906, so their difference is well inside the combined
+// uncertainty; on white noise the estimate is flagged in its status.
+TEST(JacobianExponents, AnalyzeReportsItBesideTheDivergenceEstimate) {
+  AnalysisOptions o;
+  o.verdict_seeds = 1;
+  const auto x = lorenz_x(10000);
+  EXPECT_TRUE(analyze_series(x, 100.0, o).jacobian_status.empty());  // off by default
+  o.jacobian = true;
+  const AnalysisResult r = analyze_series(x, 100.0, o);
+  ASSERT_TRUE(r.jacobian_run) << r.jacobian_status;
+  EXPECT_NEAR(r.jacobian.lambda_per_s / 0.9056, 1.0, 0.10) << describe(r.jacobian);
+  const EstimatorDisagreement d = estimator_disagreement(r);
+  ASSERT_TRUE(d.defined);
+  EXPECT_NEAR(d.difference_per_s, r.jacobian.lambda_per_s - r.divergence.lambda_per_s, 1e-12);
+  EXPECT_FALSE(d.beyond_95) << d.difference_per_s << " vs " << d.combined_uncertainty_per_s;
+  EXPECT_NE(jacobian_text(r).find("the two estimates"), std::string::npos) << jacobian_text(r);
+  const AnalysisResult noise = analyze_series(white_noise(10000), 1000.0, o);
+  EXPECT_NE(noise.jacobian_status.find("unreliable"), std::string::npos) << noise.jacobian_status;
 }
 
 }  // namespace pneumachaos

@@ -40,6 +40,7 @@ struct AnalyzeArgs {
   std::string json;
   std::string series_out;
   bool no_wolf = false;
+  bool jacobian = false;
   bool explain = false;
   bool quiet = false;
   bool no_embedding_spread = false;
@@ -50,6 +51,7 @@ struct AnalyzeArgs {
 AnalysisOptions analysis_options(const AnalyzeArgs& a) {
   AnalysisOptions options;
   options.wolf = !a.no_wolf;
+  options.jacobian = a.jacobian;
   options.embedding_spread = !a.no_embedding_spread;
   options.surrogates.count = surrogate_count_option(a.surrogates, 39);
   if (a.seed) {
@@ -154,6 +156,10 @@ Action add_analyze(CLI::App& app) {
                   "Wolf running estimate, embedded trajectory, Poincare points, maxima map)")
       ->check(output_directory_check());
   cmd->add_flag("--no-wolf", args->no_wolf, "skip Wolf's estimator");
+  cmd->add_flag("--jacobian-exponents", args->jacobian,
+                "also estimate the exponents from local Jacobians (Eckmann & Ruelle 1985), a "
+                "second estimate of the largest shown beside the divergence curve's with their "
+                "disagreement, and the next exponents (off by default: more work)");
   add_quiet_flag(cmd, args->quiet);
   cmd->add_flag("--explain", args->explain,
                 "print the rule that combines the evidence into the verdict (a paragraph)");

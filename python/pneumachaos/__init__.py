@@ -195,7 +195,8 @@ def _names(value, argument):
 
 
 def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verdict_seeds=5,
-            velocity=True, embedding_spread=True, surrogates=39, from_s=None, to_s=None):
+            velocity=True, embedding_spread=True, surrogates=39, from_s=None, to_s=None,
+            jacobian=False):
     """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
     rate_Hz, with the numbers of `pneumachaos analyze` given the same record, seed and options.
     dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1 test's and the
@@ -206,9 +207,12 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
     embedding dimensions m - 1 and m + 1. surrogates: IAAFT surrogates for the test against
     linear noise (default 39 as on the command line; 0 = off, else 19 to 999). from_s, to_s:
     analyse only the samples from/up to these times [s], the first sample at 0 s (as --from
-    and --to, e.g. from_s=2 to skip a start-up transient; default: the whole record)."""
+    and --to, e.g. from_s=2 to skip a start-up transient; default: the whole record).
+    jacobian: also estimate the exponents from local Jacobians, a second estimate of the
+    largest beside the divergence curve's (--jacobian-exponents; result["lyapunov"]["jacobian"])."""
     options = _core.AnalysisOptions()
     options.wolf = bool(wolf)
+    options.jacobian = bool(jacobian)
     options.velocity = bool(velocity)
     options.embedding_spread = bool(embedding_spread)
     for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler),

@@ -73,6 +73,7 @@ OPTIONS = {
         "--series-out": plumbing("CSV files of the curves; Python returns them as arrays "
                                  "(result.curves)"),
         "--no-wolf": kw("analyze", "wolf", True),
+        "--jacobian-exponents": kw("analyze", "jacobian", False),
         "--quiet": QUIET,
         "--explain": plumbing("a paragraph for the terminal; the evidence is in "
                               "result['verdict']"),

@@ -30,11 +30,22 @@ std::size_t neighbours_of(const JacobianOptions& o) {
                           : std::max(kMinNeighbours, kNeighboursPerDimension * o.dimension);
 }
 
-std::size_t evolve_of(const JacobianOptions& o) { return o.evolve > 0 ? o.evolve : o.delay; }
+// The delay used: the option's, capped at half an orbit over the vector's m - 1 delays.
+std::size_t delay_of(const JacobianOptions& o) {
+  if (o.typical_period == 0 || o.dimension < 2) return o.delay;
+  const std::size_t half_orbit = std::max<std::size_t>(1, o.typical_period / (2 * (o.dimension - 1)));
+  return std::min(o.delay, half_orbit);
+}
+
+constexpr std::size_t kEvolvesPerDelay = 4;
+
+std::size_t evolve_of(const JacobianOptions& o) {
+  return o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, delay_of(o) / kEvolvesPerDelay);
+}
 
 // Delay vectors that have an image `evolve` steps on: the points fitted and followed.
 std::size_t fitted_points(std::size_t n, const JacobianOptions& o) {
-  const std::size_t span = (o.dimension - 1) * o.delay + evolve_of(o);
+  const std::size_t span = (o.dimension - 1) * delay_of(o) + evolve_of(o);
   return n > span ? n - span : 0;
 }
 
@@ -175,7 +186,8 @@ void JacobianOptions::validate(std::size_t n) const {
                 fmt::format("{} samples give {} delay vectors with an image {} steps on ({} local "
                             "maps) at dimension {}, delay {}; at least {} vectors and {} maps "
                             "are needed (Theiler window {}, {} neighbours per map)",
-                            n, points, evolve, maps, dimension, delay, needed, 2 * batches,
+                            n, points, evolve, maps, dimension, delay_of(*this), needed,
+                            2 * batches,
                             theiler, neighbours_of(*this)));
   }
 }
@@ -184,8 +196,9 @@ JacobianResult jacobian_exponents(std::span<const double> x, double rate_Hz,
                                   const JacobianOptions& o) {
   o.validate(x.size());
   if (!(rate_Hz > 0.0)) throw Error("jacobian", "the sample rate must be positive");
-  const DelayEmbedding e(x, o.dimension, o.delay);
   JacobianResult r;
+  r.delay = delay_of(o);
+  const DelayEmbedding e(x, o.dimension, r.delay);
   r.evolve = evolve_of(o);
   r.neighbours = neighbours_of(o);
   const NeighbourIndex index(e, e.size() - r.evolve, repeat_resolution(x));

@@ -11,6 +11,7 @@
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
+#include "pneumachaos/analysis/jacobian_exponents.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "pneumachaos/analysis/noise_floor.hpp"
@@ -32,6 +33,10 @@ struct AnalysisOptions {
   std::size_t theiler = 0;    ///< 0: max(delay, first zero of the autocorrelation)...
   bool theiler_given = false;  ///< ...unless set: then `theiler` as given, 0 included
   bool wolf = true;           ///< also run Wolf's estimator (the paper's method)
+  /// Also estimate the exponents from local Jacobians (jacobian_exponents.hpp), a second
+  /// estimate of the largest beside the divergence curve's, compared with it. Off by default:
+  /// it adds work to every analysis (`analyze --jacobian-exponents` turns it on).
+  bool jacobian = false;
   /// Also measure the divergence exponent at embedding dimensions m - 1 and m + 1, and widen
   /// its uncertainty to reach them (AnalysisResult::exponent_spread): two more divergence
   /// curves on a quarter of the reference pairs, 20 % more work on a chaotic record. `analyze`
@@ -113,6 +118,10 @@ struct AnalysisResult {
   bool wolf_run = false;
   WolfResult wolf;
   std::string wolf_status;  ///< empty: Wolf not requested; else what it measured or why not
+  bool jacobian_run = false;  ///< the local-Jacobian estimate exists (requested and computed)
+  JacobianResult jacobian;
+  /// Empty: not requested; else what the local Jacobians measured, or why nothing.
+  std::string jacobian_status;
   PoincareSection poincare;
   std::vector<std::array<double, 2>> maxima_map;
   RegimeEvidence evidence;

@@ -25,7 +25,13 @@ struct JacobianOptions {
   std::size_t dimension = 3;
   std::size_t delay = 1;
   std::size_t theiler = 1;  ///< neighbours closer in time than this are not used
-  std::size_t evolve = 0;   ///< steps each local map spans; 0: the delay
+  /// Samples per orbit; when given (> 0), the delay is capped so that a delay vector spans at
+  /// most half an orbit: a longer window folds the reconstruction so that a neighbourhood of
+  /// a 1e4-sample record is no longer mapped linearly (docs/notes/analysis.md).
+  std::size_t typical_period = 0;
+  /// Steps each local map spans; 0: a quarter of the delay used, at least 1. Short next to
+  /// the orbit, so that the neighbourhood stays within one fold over a map.
+  std::size_t evolve = 0;
   /// Neighbours per local fit; 0: max(12, 4 x dimension), enough that an affine fit in
   /// `dimension` coordinates is over-determined about four times.
   std::size_t neighbours = 0;
@@ -51,6 +57,7 @@ struct JacobianResult {
   std::size_t skipped = 0;  ///< reference points without a fit: too few neighbours, or flat
   std::size_t neighbours = 0;      ///< per fit, as used
   std::size_t evolve = 0;          ///< steps per map, as used
+  std::size_t delay = 0;           ///< delay of the reconstruction, as used
   /// Median over the fits of the worst image coordinate's unexplained share of variance
   /// (1 - R^2): near 0 where the neighbourhood's images are a linear function of the
   /// neighbours (deterministic, smooth), near 1 for noise, where no map exists.
