@@ -101,7 +101,7 @@ void run_jacobian(std::span<const double> x, double rate_Hz, const DivergenceOpt
       r.jacobian.maps, r.jacobian.neighbours, r.jacobian.evolve, r.jacobian.delay,
       r.jacobian.unexplained,
       r.jacobian.reliable ? "the neighbourhoods follow linear maps"
-                          : fmt::format("unreliable: above {:.2g}, no smooth map (noise?)",
+                          : fmt::format("unreliable: above {:.2g}, no smooth map: noise?",
                                         j.max_unexplained));
 }
 

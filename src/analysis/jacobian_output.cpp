@@ -47,7 +47,7 @@ std::string jacobian_text(const AnalysisResult& r) {
         "all {}: {} 1/s, sum {:.3g} ({})\n",
         j.lambda_per_s, j.uncertainty_per_s, j.lambda_per_s / std::numbers::ln2,
         j.reliable ? "" : " UNRELIABLE", j.exponents_per_s.size(), spectrum_text(j), j.sum_per_s,
-        j.sum_per_s < 0.0 ? "dissipative" : "not dissipative");
+        !j.reliable ? "no map, no meaning" : j.sum_per_s < 0.0 ? "dissipative" : "not dissipative");
   }
   out += "  local Jacobians: " + r.jacobian_status + "\n";
   const EstimatorDisagreement d = estimator_disagreement(r);
