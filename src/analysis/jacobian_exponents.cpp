@@ -158,6 +158,42 @@ double batch_standard_error(const std::vector<double>& logs, std::size_t batches
   return std::sqrt(var / static_cast<double>(batches - 1) / static_cast<double>(batches));
 }
 
+// One run of the estimator: the delay vectors' neighbours indexed, the trajectory followed.
+Stretching stretching(std::span<const double> x, const JacobianOptions& o) {
+  const DelayEmbedding e(x, o.dimension, delay_of(o));
+  const NeighbourIndex index(e, e.size() - evolve_of(o), repeat_resolution(x));
+  return follow(e, index, o);
+}
+
+double largest_per_s(const Stretching& s, const JacobianOptions& o, double rate_Hz) {
+  const double measured_s =
+      static_cast<double>(s.largest_log.size() * evolve_of(o)) / rate_Hz;
+  return *std::max_element(s.log_sum.begin(), s.log_sum.end()) / measured_s;
+}
+
+// What the value depends on beyond the record's stretches, as the divergence exponent's
+// uncertainty includes its fit window: the largest change when the neighbourhoods hold twice
+// the neighbours, or the maps span twice the steps. A variant the record is too short for is
+// left out.
+double choice_spread(std::span<const double> x, double rate_Hz, const JacobianOptions& o,
+                     double value) {
+  JacobianOptions wider = o, longer = o;
+  wider.neighbours = 2 * neighbours_of(o);
+  longer.evolve = 2 * evolve_of(o);
+  double spread = 0.0;
+  for (const JacobianOptions& variant : {wider, longer}) {
+    try {
+      variant.validate(x.size());
+    } catch (const Error&) {
+      continue;
+    }
+    const Stretching s = stretching(x, variant);
+    if (s.largest_log.size() < 2 * variant.batches) continue;
+    spread = std::max(spread, std::abs(largest_per_s(s, variant, rate_Hz) - value));
+  }
+  return spread;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 1.0;
   const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
@@ -198,11 +234,9 @@ JacobianResult jacobian_exponents(std::span<const double> x, double rate_Hz,
   if (!(rate_Hz > 0.0)) throw Error("jacobian", "the sample rate must be positive");
   JacobianResult r;
   r.delay = delay_of(o);
-  const DelayEmbedding e(x, o.dimension, r.delay);
   r.evolve = evolve_of(o);
   r.neighbours = neighbours_of(o);
-  const NeighbourIndex index(e, e.size() - r.evolve, repeat_resolution(x));
-  const Stretching s = follow(e, index, o);
+  const Stretching s = stretching(x, o);
   r.maps = s.largest_log.size();
   r.skipped = s.skipped;
   if (r.maps < 2 * o.batches) {
@@ -219,7 +253,9 @@ JacobianResult jacobian_exponents(std::span<const double> x, double rate_Hz,
   std::sort(r.exponents_per_s.begin(), r.exponents_per_s.end(), std::greater<>());
   r.lambda_per_s = r.exponents_per_s.front();
   for (double l : r.exponents_per_s) r.sum_per_s += l;
-  r.uncertainty_per_s = batch_standard_error(s.largest_log, o.batches, per_map_s);
+  r.statistical_uncertainty_per_s = batch_standard_error(s.largest_log, o.batches, per_map_s);
+  r.choice_spread_per_s = choice_spread(x, rate_Hz, o, r.lambda_per_s);
+  r.uncertainty_per_s = std::hypot(r.statistical_uncertainty_per_s, r.choice_spread_per_s);
   r.unexplained = median(s.unexplained);
   r.reliable = r.unexplained <= o.max_unexplained;
   return r;

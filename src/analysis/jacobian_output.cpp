@@ -43,9 +43,10 @@ std::string jacobian_text(const AnalysisResult& r) {
   if (r.jacobian_run) {
     const JacobianResult& j = r.jacobian;
     out += fmt::format(
-        "  local Jacobians (Eckmann & Ruelle 1985): {:.4g} +- {:.2g} 1/s ({:.4g} bits/s){}; "
-        "all {}: {} 1/s, sum {:.3g} ({})\n",
+        "  local Jacobians (Eckmann & Ruelle 1985): {:.4g} +- {:.2g} 1/s ({:.4g} bits/s; "
+        "stretches +- {:.2g}, fit choices +- {:.2g}){}; all {}: {} 1/s, sum {:.3g} ({})\n",
         j.lambda_per_s, j.uncertainty_per_s, j.lambda_per_s / std::numbers::ln2,
+        j.statistical_uncertainty_per_s, j.choice_spread_per_s,
         j.reliable ? "" : " UNRELIABLE", j.exponents_per_s.size(), spectrum_text(j), j.sum_per_s,
         !j.reliable ? "no map, no meaning" : j.sum_per_s < 0.0 ? "dissipative" : "not dissipative");
   }
@@ -71,6 +72,8 @@ nlohmann::json jacobian_json(const AnalysisResult& r) {
   nlohmann::json out = {
       {"value", run ? json_number(j.lambda_per_s) : nullptr},
       {"uncertainty", run ? json_number(j.uncertainty_per_s) : nullptr},
+      {"statistical_uncertainty", run ? json_number(j.statistical_uncertainty_per_s) : nullptr},
+      {"choice_spread", run ? json_number(j.choice_spread_per_s) : nullptr},
       {"unit", "1/s"},
       {"value_bits", run ? json_number(j.lambda_per_s / std::numbers::ln2) : nullptr},
       {"unit_bits", "bits/s"},
@@ -85,7 +88,8 @@ nlohmann::json jacobian_json(const AnalysisResult& r) {
       {"delay_samples", j.delay},
       {"status", r.jacobian_status},
       {"method", "local linear maps, Householder QR along the trajectory (Eckmann & Ruelle "
-                 "1985; Sano & Sawada 1985); uncertainty: batch means"}};
+                 "1985; Sano & Sawada 1985); uncertainty: batch means, and twice the neighbours or "
+                 "the map's span"}};
   out["disagreement"] =
       d.defined ? nlohmann::json{{"difference", json_quantity(d.difference_per_s, "1/s")},
                                  {"relative", json_quantity(d.relative, "-")},

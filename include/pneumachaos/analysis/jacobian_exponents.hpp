@@ -50,9 +50,15 @@ struct JacobianResult {
   std::vector<double> exponents_per_s;
   double lambda_per_s = 0.0;       ///< exponents_per_s[0]
   double sum_per_s = 0.0;          ///< sum of the exponents: negative when dissipative
-  /// Standard error of the largest from batch means: its value on `batches` contiguous
-  /// stretches of the trajectory; +-1.96 of it is meant as a 95 % interval.
+  /// The largest's uncertainty: the two below in quadrature; +-1.96 of it is meant as a 95 %
+  /// interval.
   double uncertainty_per_s = 0.0;
+  /// Standard error of the largest from batch means: its value on `batches` contiguous
+  /// stretches of the trajectory.
+  double statistical_uncertainty_per_s = 0.0;
+  /// Largest change of the largest when the neighbourhoods hold twice the neighbours or the
+  /// maps span twice the steps: what the fits' choices move.
+  double choice_spread_per_s = 0.0;
   std::size_t maps = 0;            ///< local maps fitted and multiplied
   std::size_t skipped = 0;  ///< reference points without a fit: too few neighbours, or flat
   std::size_t neighbours = 0;      ///< per fit, as used
