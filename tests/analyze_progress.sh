@@ -23,8 +23,10 @@ done
 kill "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 grep -qE 'analyze: [^(]+ \([0-9]+ s\)' "$work/tty" || { cat -v "$work/tty" | head -c 500; fail "no progress on a terminal"; }
 # With --quiet on a terminal, and without a terminal: 8 s of work, no line.
-timeout 8 script -qfec "'$cli' analyze '$work/big.csv' --quiet" /dev/null >"$work/quiet" 2>&1
+# Both at once.
+timeout 8 script -qfec "'$cli' analyze '$work/big.csv' --quiet" /dev/null >"$work/quiet" 2>&1 &
+timeout 8 "$cli" analyze "$work/big.csv" >"$work/out" 2>"$work/err" &
+wait
 grep -q 'analyze: ' "$work/quiet" && fail "progress despite --quiet"
-timeout 8 "$cli" analyze "$work/big.csv" >"$work/out" 2>"$work/err"
 [ -s "$work/err" ] && { head -c 300 "$work/err"; fail "progress on a pipe"; }
 echo "analyze progress as expected"

@@ -23,9 +23,11 @@ check() {  # check NAME ARGS...: a progress line on a terminal, none with --quie
   for _ in $(seq 1 300); do line "$name" "$work/tty" && break; sleep 0.1; done
   kill "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
   line "$name" "$work/tty" || { cat -v "$work/tty" | head -c 400; fail "$name: no progress on a terminal"; }
-  timeout 5 script -qfec "$typed --quiet" /dev/null >"$work/quiet" 2>&1
+  # Both at once: 4 s each, twice the 2 s after which a line would show.
+  timeout 4 script -qfec "$typed --quiet" /dev/null >"$work/quiet" 2>&1 &
+  timeout 4 "$cli" "$name" "$@" >/dev/null 2>"$work/err" &
+  wait
   line "$name" "$work/quiet" && fail "$name: progress despite --quiet"
-  timeout 5 "$cli" "$name" "$@" >/dev/null 2>"$work/err"
   line "$name" "$work/err" && fail "$name: progress on a pipe"
   echo "$name: progress as expected"
 }

@@ -25,6 +25,18 @@ constexpr double kRiseShare = 0.9;
 constexpr double kLowQuantile = 0.1;
 constexpr double kHighQuantile = 0.9;
 
+// The first index at which the curve covers kRiseShare of its rise from y[0] to its maximum:
+// past it the curve is at its saturated top, where a rise is the top's own wobble (e.g. the
+// mean distance modulated at the orbital period), not divergence.
+std::size_t saturation_index(const std::vector<double>& y) {
+  if (y.empty()) return 0;
+  const double top = *std::max_element(y.begin(), y.end());
+  const double reach = y.front() + kRiseShare * (top - y.front());
+  std::size_t end = 0;
+  while (end < y.size() && y[end] < reach) ++end;
+  return end;
+}
+
 }  // namespace
 
 // Least squares by Eigen's QR of the design matrix (1, k): no cancellation of raw sums.
@@ -92,8 +104,11 @@ std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_
 LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
                                 double tolerance) {
   LinearRegion best;
-  // The longest run; ties: the earlier one (runs are in the order of their first segment).
+  // The longest run on the rise; ties: the earlier one (runs are in the order of their first
+  // segment).
+  const std::size_t top = saturation_index(y);
   for (const LinearRegion& r : agreeing_runs(y, spacing, tolerance)) {
+    if (r.first >= top) break;
     if (!best.found || r.last - r.first > best.last - best.first) best = r;
   }
   return best;
@@ -102,10 +117,7 @@ LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacin
 SlopeSpread rising_slopes(const std::vector<double>& y, std::size_t w) {
   SlopeSpread r;
   if (y.size() < 2 || w == 0) return r;
-  const double top = *std::max_element(y.begin(), y.end());
-  const double reach = y.front() + kRiseShare * (top - y.front());
-  std::size_t end = 0;
-  while (end < y.size() && y[end] < reach) ++end;
+  const std::size_t end = saturation_index(y);
   std::vector<double> slopes;
   for (std::size_t k = 0; k + w <= end && k + w < y.size(); ++k) {
     slopes.push_back((y[k + w] - y[k]) / static_cast<double>(w));

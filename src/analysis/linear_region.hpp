@@ -29,7 +29,11 @@ struct LinearRegion {
 std::vector<LinearRegion> agreeing_runs(const std::vector<double>& y, std::size_t spacing,
                                         double tolerance);
 
-/// The longest of agreeing_runs (ties: the earlier one): the curve's linear region.
+/// The longest of agreeing_runs that start before the curve first covers 90 % of its rise from
+/// y[0] to its maximum (ties: the earlier one): the curve's linear region. Past that point the
+/// curve is at its saturated top, where a rise is the top's wobble (a noisy cycle's mean
+/// distance modulated at its period), not divergence. The uncertainty still reads every run
+/// (exponent_spread's window choice): a bound on the window, not a second value.
 LinearRegion find_linear_region(const std::vector<double>& y, std::size_t spacing,
                                 double tolerance);
 

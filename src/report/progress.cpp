@@ -9,8 +9,8 @@
 namespace pneumachaos {
 
 ReproduceProgress::ReproduceProgress(bool show, int stages, std::size_t total_runs,
-                                     Callback on_runs)
-    : stages_(stages), total_runs_(total_runs), on_runs_(std::move(on_runs)) {
+                                     Callback on_runs, std::chrono::milliseconds every)
+    : stages_(stages), total_runs_(total_runs), on_runs_(std::move(on_runs)), every_(every) {
   terminal_ = show && ::isatty(STDERR_FILENO) != 0;
   plain_ = show && !terminal_;
   if (plain_) ticker_ = std::thread([this] { tick(); });
@@ -80,7 +80,7 @@ std::string ReproduceProgress::line_locked() const {
 // One line every 10 s, never more often: a log gets a heartbeat, not a flood.
 void ReproduceProgress::tick() {
   std::unique_lock<std::mutex> lock(m_);
-  while (!cv_.wait_for(lock, std::chrono::seconds(10), [this] { return stop_; })) {
+  while (!cv_.wait_for(lock, every_, [this] { return stop_; })) {
     fmt::print(stderr, "{}\n", line_locked());
     std::fflush(stderr);
   }

@@ -17,8 +17,10 @@ class ReproduceProgress {
  public:
   /// Called with the runs done and total_runs whenever the count moves.
   using Callback = std::function<void(std::size_t done, std::size_t total)>;
-  /// total_runs: the sweep runs of the whole report (the bulk of its time).
-  ReproduceProgress(bool show, int stages, std::size_t total_runs, Callback on_runs = {});
+  /// total_runs: the sweep runs of the whole report (the bulk of its time). every: the plain
+  /// line's interval (10 s; a test shortens it).
+  ReproduceProgress(bool show, int stages, std::size_t total_runs, Callback on_runs = {},
+                    std::chrono::milliseconds every = std::chrono::seconds(10));
   ~ReproduceProgress();
   ReproduceProgress(const ReproduceProgress&) = delete;
   ReproduceProgress& operator=(const ReproduceProgress&) = delete;
@@ -39,6 +41,7 @@ class ReproduceProgress {
   std::size_t total_runs_, runs_ = 0, current_ = 0;
   std::string what_;
   Callback on_runs_;
+  std::chrono::milliseconds every_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::mutex m_;
   std::condition_variable cv_;
