@@ -139,6 +139,28 @@ void BM_WolfWhiteNoise(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
 }
 
+// The local-Jacobian estimator (`analyze --jacobian-exponents`): on Lorenz at the analysis's
+// embedding, and on white noise, where every sample is a map (delay 1) in a high dimension.
+JacobianOptions jacobian_of(const DivergenceOptions& d) {
+  JacobianOptions j;
+  j.dimension = d.dimension;
+  j.delay = d.delay;
+  j.theiler = d.theiler;
+  return j;
+}
+
+void BM_Jacobian(benchmark::State& state) {
+  const auto& x = lorenz(static_cast<std::size_t>(state.range(0)));
+  const JacobianOptions j = jacobian_of(embedding_of(x));
+  for (auto _ : state) benchmark::DoNotOptimize(jacobian_exponents(x, 100.0, j).lambda_per_s);
+}
+
+void BM_JacobianWhiteNoise(benchmark::State& state) {
+  const auto x = testing::white_noise(static_cast<std::size_t>(state.range(0)));
+  const JacobianOptions j = jacobian_of(embedding_of(x));
+  for (auto _ : state) benchmark::DoNotOptimize(jacobian_exponents(x, 100.0, j).lambda_per_s);
+}
+
 // The divergence curve's logarithms: one step's 729 squared distances (a 1e4 record's
 // horizon), the C library's log one by one (what the curve called before) against log_array.
 std::vector<double> squared_distances() {
@@ -173,6 +195,8 @@ BENCHMARK(BM_AnalyzeSweepRecords)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnalyzeWithSurrogates)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Divergence)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wolf)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Jacobian)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_JacobianWhiteNoise)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LogLibrary);
 BENCHMARK(BM_LogArray);
 BENCHMARK(BM_WolfWhiteNoise)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);

@@ -414,6 +414,7 @@ PYBIND11_MODULE(_core, m) {
   py::class_<AnalysisOptions>(m, "AnalysisOptions")
       .def(py::init<>())
       .def_readwrite("wolf", &AnalysisOptions::wolf)
+      .def_readwrite("jacobian", &AnalysisOptions::jacobian)
       .def_readwrite("velocity", &AnalysisOptions::velocity)
       .def_readwrite("embedding_spread", &AnalysisOptions::embedding_spread)
       .def_readwrite("paper_judge", &AnalysisOptions::paper_judge)

@@ -104,6 +104,10 @@ struct Row {
   bool from_slopes = false;        ///< no linear region: the local-slope estimate
   Regime regime = Regime::kUndetermined;
   double orbits = 0.0;  ///< orbits in the record (maxima spacing)
+  /// The local-Jacobian estimate (analyse(..., jacobian = true)): value, 95 % half-width
+  /// (1.96 u), and whether its fits call it reliable.
+  bool jacobian_found = false, jacobian_reliable = false;
+  double jacobian = 0.0, jacobian_half = 0.0;
   [[nodiscard]] double error() const { return found ? lambda / truth - 1.0 : -1.0; }
   [[nodiscard]] bool within10() const { return found && std::abs(error()) <= 0.10; }
   [[nodiscard]] bool covered() const {
@@ -113,7 +117,7 @@ struct Row {
 
 /// The analysis of one record, as `analyze` runs it (39 surrogates).
 inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
-                   std::uint64_t seed = 1) {
+                   std::uint64_t seed = 1, bool jacobian = false) {
   const std::vector<double> x = record(s, n);
   const double rate = kPointsPerPeriod / s.period;
   AnalysisOptions o;
@@ -121,6 +125,7 @@ inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
   o.seed = seed;
   o.wolf = false;
   o.embedding_spread = true;  // as `analyze` runs it
+  o.jacobian = jacobian;
   const AnalysisResult r = analyze_series(x, rate, o);
   const Benettin span = benettin(s, static_cast<double>(n) / kPointsPerPeriod);
   Row row{s.name, n, long_run.lambda, span.lambda, long_run.spread, s.period,
@@ -133,6 +138,10 @@ inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
   row.high = row.from_slopes ? d.local_slopes.high * rate : row.lambda + 1.96 * d.uncertainty_per_s;
   row.regime = r.verdict.regime;
   row.orbits = r.maxima_spacing_samples > 0 ? n / r.maxima_spacing_samples : 0.0;
+  row.jacobian_found = r.jacobian_run;
+  row.jacobian_reliable = r.jacobian_run && r.jacobian.reliable;
+  row.jacobian = r.jacobian.lambda_per_s;
+  row.jacobian_half = 1.96 * r.jacobian.uncertainty_per_s;
   return row;
 }
 
@@ -194,6 +203,47 @@ inline Summary summarise(const std::vector<Row>& rows) {
     s.within10 += r.within10() ? 1 : 0;
     s.covered += r.covered() ? 1 : 0;
     s.chaotic += r.regime == Regime::kChaotic ? 1 : 0;
+  }
+  return s;
+}
+
+/// Both estimators against both references (docs/validation.md, "Two estimators"): within
+/// 10 % of the long-run truth and of the record's own stretch, and the truth inside the 95 %
+/// interval; `jacobian_*` counts only reliable local-Jacobian values as found.
+struct EstimatorScores {
+  std::size_t records = 0;
+  std::size_t divergence_truth10 = 0, divergence_span10 = 0, divergence_covered = 0;
+  std::size_t jacobian_found = 0, jacobian_truth10 = 0, jacobian_span10 = 0,
+              jacobian_covered = 0;
+  std::vector<double> jacobian_half_share;  ///< 95 % half-width / value, reliable values
+  [[nodiscard]] std::string text() const {
+    std::vector<double> h = jacobian_half_share;
+    std::sort(h.begin(), h.end());
+    const double median = h.empty() ? 0.0 : h[h.size() / 2];
+    return fmt::format("{} records; divergence: within 10 % of the truth {}, of the span {}, "
+                       "truth covered {}; local Jacobians: reliable value {}, within 10 % of "
+                       "the truth {}, of the span {}, truth covered {}, median 95 % half-width "
+                       "{:.0f} % of the value",
+                       records, divergence_truth10, divergence_span10, divergence_covered,
+                       jacobian_found, jacobian_truth10, jacobian_span10, jacobian_covered,
+                       100.0 * median);
+  }
+};
+
+inline EstimatorScores score_estimators(const std::vector<Row>& rows) {
+  const auto near = [](double v, double ref) { return std::abs(v / ref - 1.0) <= 0.10; };
+  EstimatorScores s;
+  for (const Row& r : rows) {
+    ++s.records;
+    s.divergence_truth10 += r.within10() ? 1 : 0;
+    s.divergence_span10 += r.found && near(r.lambda, r.span) ? 1 : 0;
+    s.divergence_covered += r.covered() ? 1 : 0;
+    if (!r.jacobian_reliable) continue;
+    ++s.jacobian_found;
+    s.jacobian_truth10 += near(r.jacobian, r.truth) ? 1 : 0;
+    s.jacobian_span10 += near(r.jacobian, r.span) ? 1 : 0;
+    s.jacobian_covered += std::abs(r.jacobian - r.truth) <= r.jacobian_half ? 1 : 0;
+    s.jacobian_half_share.push_back(r.jacobian_half / std::abs(r.jacobian));
   }
   return s;
 }

@@ -42,6 +42,7 @@ struct AnalyzeArgs {
   std::string series_out;
   bool no_wolf = false;
   std::string judge = "strict";
+  bool jacobian = false;
   bool explain = false;
   bool quiet = false;
   bool no_embedding_spread = false;
@@ -55,6 +56,7 @@ AnalysisOptions analysis_options(const AnalyzeArgs& a) {
   options.paper_judge = a.judge == "paper";
   if (options.paper_judge && a.no_wolf)
     throw Error("--judge", "paper reads Wolf's exponent, which --no-wolf skips");
+  options.jacobian = a.jacobian;
   options.embedding_spread = !a.no_embedding_spread;
   options.surrogates.count = surrogate_count_option(a.surrogates, 39);
   if (a.seed) {
@@ -166,6 +168,10 @@ Action add_analyze(CLI::App& app) {
                   "zero, Wolf's exponent positive) lead, Wolf running on every record as the "
                   "paper's did; both are reported either way when Wolf ran")
       ->check(CLI::IsMember({"strict", "paper"}));
+  cmd->add_flag("--jacobian-exponents", args->jacobian,
+                "also estimate the exponents from local Jacobians (Eckmann & Ruelle 1985), a "
+                "second estimate of the largest shown beside the divergence curve's with their "
+                "disagreement, and the next exponents (off by default: more work)");
   add_quiet_flag(cmd, args->quiet);
   cmd->add_flag("--explain", args->explain,
                 "print the rule that combines the evidence into the verdict (a paragraph)");

@@ -196,7 +196,7 @@ def _names(value, argument):
 
 def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verdict_seeds=5,
             velocity=True, embedding_spread=True, surrogates=39, from_s=None, to_s=None,
-            judge="strict"):
+            judge="strict", jacobian=False):
     """Chaos indices and the regime verdict of a uniformly sampled 1-D record x [any unit] at
     rate_Hz, with the numbers of `pneumachaos analyze` given the same record, seed and options.
     dimension, delay (samples), theiler (samples): 0 = automatic. seed: the 0-1 test's and the
@@ -209,7 +209,9 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
     analyse only the samples from/up to these times [s], the first sample at 0 s (as --from
     and --to, e.g. from_s=2 to skip a start-up transient; default: the whole record).
     judge: "strict" or "paper" (--judge): with "paper" Wolf's estimator runs on every record,
-    as the paper ran it; the paper's three indices are in result["paper_judge"] either way."""
+    as the paper ran it; the paper's three indices are in result["paper_judge"] either way.
+    jacobian: also estimate the exponents from local Jacobians, a second estimate of the
+    largest beside the divergence curve's (--jacobian-exponents; result["lyapunov"]["jacobian"])."""
     if judge not in ("strict", "paper"):
         raise ValueError(f"judge: expected 'strict' or 'paper', got {judge!r}")
     if judge == "paper" and not wolf:
@@ -217,6 +219,7 @@ def analyze(x, rate_Hz, wolf=True, dimension=0, delay=0, theiler=0, seed=1, verd
     options = _core.AnalysisOptions()
     options.wolf = bool(wolf)
     options.paper_judge = judge == "paper"
+    options.jacobian = bool(jacobian)
     options.velocity = bool(velocity)
     options.embedding_spread = bool(embedding_spread)
     for name, value in (("dimension", dimension), ("delay", delay), ("theiler", theiler),

@@ -74,6 +74,7 @@ OPTIONS = {
                                  "(result.curves)"),
         "--no-wolf": kw("analyze", "wolf", True),
         "--judge": kw("analyze", "judge", "strict"),
+        "--jacobian-exponents": kw("analyze", "jacobian", False),
         "--quiet": QUIET,
         "--explain": plumbing("a paragraph for the terminal; the evidence is in "
                               "result['verdict']"),

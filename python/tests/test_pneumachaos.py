@@ -67,6 +67,15 @@ def test_lorenz_exponent_and_verdict():
     assert a.curves["divergence"].ndim == 1 and a.curves["psd"].size > 10
 
 
+def test_the_second_exponent_only_when_asked():
+    x = lorenz_x(10000)
+    assert "jacobian" not in pc.analyze(x, 100.0, wolf=False, surrogates=0)["lyapunov"]
+    jac = pc.analyze(x, 100.0, wolf=False, surrogates=0, jacobian=True)["lyapunov"]["jacobian"]
+    # Local Jacobians on Lorenz: 0.906 within 10 %, as tests/test_jacobian_exponents.cpp asks.
+    assert jac["value"] == pytest.approx(0.906, rel=0.10) and jac["reliable"] is True
+    assert jac["disagreement"]["beyond_95"] is False
+
+
 def test_the_verdict_says_how_it_held_across_seeds():
     t = np.arange(10000) / 1000.0
     tone = pc.analyze(np.sin(2 * np.pi * 5 * t), 1000.0, wolf=False, verdict_seeds=3)

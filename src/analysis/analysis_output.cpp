@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "analysis/jacobian_output.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/analysis/paper_judge.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
@@ -265,6 +266,7 @@ std::string analysis_summary(const AnalysisResult& r, const std::string& name,
                       r.wolf.replacements);
     }
     if (!r.wolf_status.empty()) out += "  Wolf: " + r.wolf_status + "\n";
+    out += jacobian_text(r);
     out += fmt::format("Poincare section: {} points; successive maxima: {} pairs\n",
                        r.poincare.points.size(), r.maxima_map.size());
     out += evidence_summary(r);
@@ -382,6 +384,7 @@ std::string analysis_json(const AnalysisResult& r, const std::string& source,
                              {"method", "Wolf, Swift, Swinney & Vastano 1985"}};
   }
   j["paper_judge"] = paper_judge_json(paper_judge(r));
+  if (!r.jacobian_status.empty()) j["lyapunov"]["jacobian"] = jacobian_json(r);
   j["poincare"] = {{"points", r.poincare.points.size()},
                    {"level", quantity(r.poincare.level, unit)}};
   j["zero_one"] = zero_one_json(r);

@@ -78,6 +78,34 @@ void run_wolf(std::span<const double> x, double rate_Hz, const DivergenceOptions
                         "strictly periodic record); 0 is reported";
 }
 
+// The second estimate of the exponents, on the divergence curve's embedding. A record the
+// local fits cannot use (every neighbourhood flat, too short for the maps) gets a status, not
+// a failed analysis; whether the fits found a map at all is the estimate's own diagnostic
+// (JacobianResult::reliable), reported beside it.
+void run_jacobian(std::span<const double> x, double rate_Hz, const DivergenceOptions& d,
+                  AnalysisResult& r) {
+  JacobianOptions j;
+  j.dimension = d.dimension;
+  j.delay = d.delay;
+  j.theiler = d.theiler;
+  j.typical_period = d.typical_period;
+  try {
+    r.jacobian = jacobian_exponents(x, rate_Hz, j);
+  } catch (const Error& e) {
+    r.jacobian_status = "not computed: " + e.message();
+    return;
+  }
+  r.jacobian_run = true;
+  r.jacobian_status = fmt::format(
+      "{} local maps of {} neighbours over {} steps, delay {}; median unexplained share {:.3g} "
+      "({})",
+      r.jacobian.maps, r.jacobian.neighbours, r.jacobian.evolve, r.jacobian.delay,
+      r.jacobian.unexplained,
+      r.jacobian.reliable ? "the neighbourhoods follow linear maps"
+                          : fmt::format("unreliable: above {:.2g}, no smooth map: noise?",
+                                        j.max_unexplained));
+}
+
 void note_lines(AnalysisResult& r) {
   r.evidence.second_line_power = r.lines.second_power;
   r.evidence.second_line_ratio =
@@ -235,6 +263,7 @@ void run_exponents(std::span<const double> x, double rate_Hz, const AnalysisOpti
     r.divergence.uncertainty_per_s = widened_uncertainty(r.divergence, r.exponent_spread);
   }
   if (o.wolf) run_wolf(x, rate_Hz, d, o.paper_judge, r);
+  if (o.jacobian) run_jacobian(x, rate_Hz, d, r);
   RegimeEvidence& e = r.evidence;
   e.lyapunov_found = r.divergence.found_linear_region;
   // Computed only without a linear region (divergence_exponent).

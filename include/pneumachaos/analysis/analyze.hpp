@@ -11,6 +11,7 @@
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
+#include "pneumachaos/analysis/jacobian_exponents.hpp"
 #include "pneumachaos/analysis/lyapunov_divergence.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "pneumachaos/analysis/noise_floor.hpp"
@@ -35,6 +36,10 @@ struct AnalysisOptions {
   /// Judge by the paper's three indices as the paper did (paper_judge.hpp): Wolf's estimator
   /// then runs on every record, linear noise included, where it is otherwise skipped.
   bool paper_judge = false;
+  /// Also estimate the exponents from local Jacobians (jacobian_exponents.hpp), a second
+  /// estimate of the largest beside the divergence curve's, compared with it. Off by default:
+  /// it adds work to every analysis (`analyze --jacobian-exponents` turns it on).
+  bool jacobian = false;
   /// Also measure the divergence exponent at embedding dimensions m - 1 and m + 1, and widen
   /// its uncertainty to reach them (AnalysisResult::exponent_spread): two more divergence
   /// curves on a quarter of the reference pairs, 20 % more work on a chaotic record. `analyze`
@@ -116,6 +121,10 @@ struct AnalysisResult {
   bool wolf_run = false;
   WolfResult wolf;
   std::string wolf_status;  ///< empty: Wolf not requested; else what it measured or why not
+  bool jacobian_run = false;  ///< the local-Jacobian estimate exists (requested and computed)
+  JacobianResult jacobian;
+  /// Empty: not requested; else what the local Jacobians measured, or why nothing.
+  std::string jacobian_status;
   PoincareSection poincare;
   std::vector<std::array<double, 2>> maxima_map;
   RegimeEvidence evidence;

@@ -1,0 +1,264 @@
+#include "pneumachaos/analysis/jacobian_exponents.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "analysis/delay_embedding.hpp"
+#include "pneumachaos/core/error.hpp"
+
+namespace pneumachaos {
+namespace {
+
+// Neighbours per fit by default: at least this many, and this many per coordinate, so that
+// the affine fit (dimension + 1 unknowns per image coordinate) is over-determined about four
+// times and one stray neighbour does not set the map.
+constexpr std::size_t kMinNeighbours = 12;
+constexpr std::size_t kNeighboursPerDimension = 4;
+
+// Relative size of a neighbourhood's smallest extent (QR pivot) below which it counts as flat:
+// far below a flow's thin but real spread across its attractor (1e-3 of the largest extent
+// and more), far above the rounding of a computed record (1e-16).
+constexpr double kRankTolerance = 1e-8;
+
+std::size_t neighbours_of(const JacobianOptions& o) {
+  return o.neighbours > 0 ? o.neighbours
+                          : std::max(kMinNeighbours, kNeighboursPerDimension * o.dimension);
+}
+
+// The delay used: the option's, capped at half an orbit over the vector's m - 1 delays.
+std::size_t delay_of(const JacobianOptions& o) {
+  if (o.typical_period == 0 || o.dimension < 2) return o.delay;
+  const std::size_t half_orbit = std::max<std::size_t>(1, o.typical_period / (2 * (o.dimension - 1)));
+  return std::min(o.delay, half_orbit);
+}
+
+constexpr std::size_t kEvolvesPerDelay = 4;
+
+std::size_t evolve_of(const JacobianOptions& o) {
+  return o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, delay_of(o) / kEvolvesPerDelay);
+}
+
+// Delay vectors that have an image `evolve` steps on: the points fitted and followed.
+std::size_t fitted_points(std::size_t n, const JacobianOptions& o) {
+  const std::size_t span = (o.dimension - 1) * delay_of(o) + evolve_of(o);
+  return n > span ? n - span : 0;
+}
+
+// A Jacobian on one neighbourhood, and the share of its images' variance it leaves
+// unexplained (the worst image coordinate's 1 - R^2).
+struct LocalMap {
+  Eigen::MatrixXd jacobian;
+  double unexplained = 0.0;
+  bool spans = false;  ///< false: the neighbourhood is flat in some direction; no map
+};
+
+// Affine least squares: points and images are centred on their neighbourhood's means, so the
+// fit's constant term drops out and the reference point carries no more weight than its
+// neighbours (a noisy reference would otherwise bias every map it anchors).
+LocalMap fit_local_map(const DelayEmbedding& e, std::size_t reference,
+                       std::span<const Neighbour> neighbours, std::size_t evolve) {
+  const auto m = static_cast<Eigen::Index>(e.dimension());
+  const auto rows = static_cast<Eigen::Index>(neighbours.size() + 1);
+  Eigen::MatrixXd points(rows, m), images(rows, m);
+  const auto fill = [&](Eigen::Index row, std::size_t j) {
+    for (Eigen::Index d = 0; d < m; ++d) {
+      points(row, d) = e.coordinate(j, static_cast<std::size_t>(d));
+      images(row, d) = e.coordinate(j + evolve, static_cast<std::size_t>(d));
+    }
+  };
+  fill(0, reference);
+  for (std::size_t k = 0; k < neighbours.size(); ++k) {
+    fill(static_cast<Eigen::Index>(k + 1), neighbours[k].index);
+  }
+  points.rowwise() -= points.colwise().mean();
+  images.rowwise() -= images.colwise().mean();
+  // Column-pivoting Householder QR, which also tells whether the neighbourhood spans every
+  // coordinate: one that does not (a strictly periodic record, whose nearest non-repeating
+  // neighbours all sit one sample along the orbit) determines no map across it.
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(points);
+  qr.setThreshold(kRankTolerance);
+  if (qr.rank() < m) return {};
+  const Eigen::MatrixXd transposed = qr.solve(images);
+  const Eigen::MatrixXd residual = images - points * transposed;
+  double worst = 0.0;
+  for (Eigen::Index d = 0; d < m; ++d) {
+    const double total = images.col(d).squaredNorm();
+    if (total > 0.0) worst = std::max(worst, residual.col(d).squaredNorm() / total);
+  }
+  return {transposed.transpose(), worst, true};
+}
+
+// What following the trajectory accumulates.
+struct Stretching {
+  std::vector<double> log_sum;      ///< per exponent, in the QR's column order
+  std::vector<double> largest_log;  ///< each map's log |R_00|, in trajectory order
+  std::vector<double> unexplained;  ///< each map's
+  std::size_t skipped = 0;
+};
+
+// The Jacobians multiplied along the trajectory, re-orthonormalised after each by Householder
+// QR (Eckmann & Ruelle 1985): log |R_jj| is the stretching of the j-th direction of the frame.
+Stretching follow(const DelayEmbedding& e, const NeighbourIndex& index,
+                  const JacobianOptions& o) {
+  const std::size_t m = o.dimension, evolve = evolve_of(o);
+  std::vector<std::size_t> references;
+  for (std::size_t i = 0; i < index.size(); i += evolve) references.push_back(i);
+  const auto neighbourhoods = index.k_nearest_each(references, neighbours_of(o), o.theiler);
+  Stretching s;
+  s.log_sum.assign(m, 0.0);
+  Eigen::MatrixXd frame = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(m),
+                                                    static_cast<Eigen::Index>(m));
+  for (std::size_t r = 0; r < references.size(); ++r) {
+    // Too few neighbours (exact repeats skipped, a sparse corner) or a flat neighbourhood: no
+    // map; the frame is carried to the next point unchanged and this step's time not counted.
+    if (neighbourhoods[r].size() < m + 1) {
+      ++s.skipped;
+      continue;
+    }
+    const LocalMap map = fit_local_map(e, references[r], neighbourhoods[r], evolve);
+    if (!map.spans) {
+      ++s.skipped;
+      continue;
+    }
+    s.unexplained.push_back(map.unexplained);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(map.jacobian * frame);
+    frame = qr.householderQ();
+    for (std::size_t j = 0; j < m; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      // A direction the map collapses exactly: the smallest normal stretching, not -inf.
+      const double stretch =
+          std::max(std::abs(qr.matrixQR()(jj, jj)), std::numeric_limits<double>::min());
+      s.log_sum[j] += std::log(stretch);
+      if (j == 0) s.largest_log.push_back(std::log(stretch));
+    }
+  }
+  return s;
+}
+
+// Standard error of the largest exponent from `batches` contiguous, equally long runs of maps.
+double batch_standard_error(const std::vector<double>& logs, std::size_t batches,
+                            double per_map_s) {
+  const std::size_t per_batch = logs.size() / batches;
+  if (per_batch == 0) return 0.0;
+  std::vector<double> values;
+  for (std::size_t b = 0; b < batches; ++b) {
+    double sum = 0.0;
+    for (std::size_t k = b * per_batch; k < (b + 1) * per_batch; ++k) sum += logs[k];
+    values.push_back(sum / (static_cast<double>(per_batch) * per_map_s));
+  }
+  double mean = 0.0;
+  for (double v : values) mean += v / static_cast<double>(batches);
+  double var = 0.0;
+  for (double v : values) var += (v - mean) * (v - mean);
+  return std::sqrt(var / static_cast<double>(batches - 1) / static_cast<double>(batches));
+}
+
+// One run of the estimator: the delay vectors' neighbours indexed, the trajectory followed.
+Stretching stretching(std::span<const double> x, const JacobianOptions& o) {
+  const DelayEmbedding e(x, o.dimension, delay_of(o));
+  const NeighbourIndex index(e, e.size() - evolve_of(o), repeat_resolution(x));
+  return follow(e, index, o);
+}
+
+double largest_per_s(const Stretching& s, const JacobianOptions& o, double rate_Hz) {
+  const double measured_s =
+      static_cast<double>(s.largest_log.size() * evolve_of(o)) / rate_Hz;
+  return *std::max_element(s.log_sum.begin(), s.log_sum.end()) / measured_s;
+}
+
+// What the value depends on beyond the record's stretches, as the divergence exponent's
+// uncertainty includes its fit window: the largest change when the neighbourhoods hold twice
+// the neighbours, or the maps span twice the steps. A variant the record is too short for is
+// left out.
+double choice_spread(std::span<const double> x, double rate_Hz, const JacobianOptions& o,
+                     double value) {
+  JacobianOptions wider = o, longer = o;
+  wider.neighbours = 2 * neighbours_of(o);
+  longer.evolve = 2 * evolve_of(o);
+  double spread = 0.0;
+  for (const JacobianOptions& variant : {wider, longer}) {
+    try {
+      variant.validate(x.size());
+    } catch (const Error&) {
+      continue;
+    }
+    const Stretching s = stretching(x, variant);
+    if (s.largest_log.size() < 2 * variant.batches) continue;
+    spread = std::max(spread, std::abs(largest_per_s(s, variant, rate_Hz) - value));
+  }
+  return spread;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 1.0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+void JacobianOptions::validate(std::size_t n) const {
+  if (dimension == 0 || delay == 0) throw Error("jacobian", "dimension and delay must be >= 1");
+  if (neighbours != 0 && neighbours < dimension + 1) {
+    throw Error("jacobian", fmt::format("{} neighbours cannot fit an affine map in {} "
+                                        "coordinates: at least {} are needed",
+                                        neighbours, dimension, dimension + 1));
+  }
+  if (batches < 2) throw Error("jacobian", "batches must be >= 2");
+  if (!(max_unexplained > 0.0 && max_unexplained <= 1.0)) {
+    throw Error("jacobian", "max_unexplained must be in (0, 1]");
+  }
+  const std::size_t points = fitted_points(n, *this), evolve = evolve_of(*this);
+  const std::size_t maps = points == 0 ? 0 : (points - 1) / evolve + 1;
+  const std::size_t needed = std::max(kMinExponentSamples, neighbours_of(*this) + 2 * theiler + 1);
+  if (points < needed || maps < 2 * batches) {
+    throw Error("jacobian",
+                fmt::format("{} samples give {} delay vectors with an image {} steps on ({} local "
+                            "maps) at dimension {}, delay {}; at least {} vectors and {} maps "
+                            "are needed (Theiler window {}, {} neighbours per map)",
+                            n, points, evolve, maps, dimension, delay_of(*this), needed,
+                            2 * batches,
+                            theiler, neighbours_of(*this)));
+  }
+}
+
+JacobianResult jacobian_exponents(std::span<const double> x, double rate_Hz,
+                                  const JacobianOptions& o) {
+  o.validate(x.size());
+  if (!(rate_Hz > 0.0)) throw Error("jacobian", "the sample rate must be positive");
+  JacobianResult r;
+  r.delay = delay_of(o);
+  r.evolve = evolve_of(o);
+  r.neighbours = neighbours_of(o);
+  const Stretching s = stretching(x, o);
+  r.maps = s.largest_log.size();
+  r.skipped = s.skipped;
+  if (r.maps < 2 * o.batches) {
+    throw Error("jacobian", fmt::format("only {} of {} reference points had {} neighbours "
+                                        "outside the Theiler window spanning all {} "
+                                        "coordinates: too few local maps (a strictly periodic "
+                                        "or coarsely quantised record)",
+                                        r.maps, r.maps + r.skipped, o.dimension + 1,
+                                        o.dimension));
+  }
+  const double per_map_s = static_cast<double>(r.evolve) / rate_Hz;
+  const double measured_s = static_cast<double>(r.maps) * per_map_s;
+  for (double l : s.log_sum) r.exponents_per_s.push_back(l / measured_s);
+  std::sort(r.exponents_per_s.begin(), r.exponents_per_s.end(), std::greater<>());
+  r.lambda_per_s = r.exponents_per_s.front();
+  for (double l : r.exponents_per_s) r.sum_per_s += l;
+  r.statistical_uncertainty_per_s = batch_standard_error(s.largest_log, o.batches, per_map_s);
+  r.choice_spread_per_s = choice_spread(x, rate_Hz, o, r.lambda_per_s);
+  r.uncertainty_per_s = std::hypot(r.statistical_uncertainty_per_s, r.choice_spread_per_s);
+  r.unexplained = median(s.unexplained);
+  r.reliable = r.unexplained <= o.max_unexplained;
+  return r;
+}
+
+}  // namespace pneumachaos

@@ -1,0 +1,31 @@
+#pragma once
+// (Internal to the analysis module.) The local-Jacobian estimate in `analyze`'s text and JSON,
+// beside the divergence estimate and compared with it (docs/reference/outputs.md).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "pneumachaos/analysis/analyze.hpp"
+
+namespace pneumachaos {
+
+/// How far the local-Jacobian exponent lies from the divergence exponent, in 1/s and in units
+/// of their combined uncertainty (the two uncertainties in quadrature).
+struct EstimatorDisagreement {
+  bool defined = false;  ///< both estimates exist
+  double difference_per_s = 0.0;  ///< Jacobian minus divergence
+  double relative = 0.0;          ///< difference / |divergence value|
+  double combined_uncertainty_per_s = 0.0;
+  double in_uncertainties = 0.0;  ///< |difference| / combined uncertainty
+  bool beyond_95 = false;         ///< in_uncertainties > 1.96: the 95 % intervals disagree
+};
+
+EstimatorDisagreement estimator_disagreement(const AnalysisResult& r);
+
+/// The text lines (empty when not requested).
+std::string jacobian_text(const AnalysisResult& r);
+
+/// lyapunov.jacobian of the JSON (null when not requested).
+nlohmann::json jacobian_json(const AnalysisResult& r);
+
+}  // namespace pneumachaos
