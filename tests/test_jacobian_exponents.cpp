@@ -14,6 +14,7 @@
 #include "pneumachaos/analysis/embedding_parameters.hpp"
 #include "pneumachaos/analysis/jacobian_exponents.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "automatic_embedding.hpp"
 #include "reference_series.hpp"
 
 namespace pneumachaos {
@@ -21,16 +22,8 @@ namespace {
 
 using namespace pneumachaos::testing;
 
-// The automatic embedding `analyze` uses: AMI delay, Theiler window max(delay, first zero of
-// the autocorrelation), Cao dimension.
 JacobianOptions automatic(const std::vector<double>& x) {
-  JacobianOptions o;
-  o.delay = choose_delay(x).delay;
-  const Autocorrelation acf = autocorrelation(x, 1.0);
-  o.theiler =
-      std::max<std::size_t>(o.delay, static_cast<std::size_t>(std::max(acf.first_zero_s, 1.0)));
-  o.dimension = choose_dimension(x, o.delay, o.theiler).dimension;
-  return o;
+  return automatic_embedding<JacobianOptions>(x);
 }
 
 std::string describe(const JacobianResult& r) {

@@ -15,6 +15,7 @@
 #include "analysis/pair_distances.hpp"
 #include "pneumachaos/analysis/lyapunov_wolf.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "automatic_embedding.hpp"
 #include "reference_series.hpp"
 #include "validation_corpus.hpp"
 
@@ -23,16 +24,8 @@ namespace {
 
 using namespace pneumachaos::testing;
 
-// The automatic embedding the analysis uses: AMI delay, Theiler window = max(delay, first
-// zero of the autocorrelation), Cao dimension.
 DivergenceOptions automatic(const std::vector<double>& x) {
-  DivergenceOptions o;
-  o.delay = choose_delay(x).delay;
-  const Autocorrelation acf = autocorrelation(x, 1.0);
-  o.theiler =
-      std::max<std::size_t>(o.delay, static_cast<std::size_t>(std::max(acf.first_zero_s, 1.0)));
-  o.dimension = choose_dimension(x, o.delay, o.theiler).dimension;
-  return o;
+  return automatic_embedding<DivergenceOptions>(x);
 }
 
 struct Reference {
