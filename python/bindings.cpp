@@ -32,6 +32,7 @@
 #include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/run_start.hpp"
 #include "pneumachaos/stability/stability_map.hpp"
 #include "pneumachaos/stability/stability_output.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
@@ -180,7 +181,7 @@ py::dict simulate_py(const Scenario& scenario, std::uint64_t seed) {
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    r = simulate(plant, scenario.run);
+    r = simulate_from(plant, run_start_state(plant, scenario.run), scenario.run);
   }
   if (r.summary.ok()) add_scenario_measured_channels(r.series, scenario, seed);
   return simulation_dict(std::move(r), plant);

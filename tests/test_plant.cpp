@@ -7,6 +7,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "model/variation.hpp"
 #include "variant_scenarios.hpp"
 #include "stuck_samples.hpp"
 #include "tight_options.hpp"
@@ -314,6 +315,26 @@ TEST(Plant, ExactJacobianMatchesDifferencesOnTheSimpleRig) {
     EXPECT_EQ(J[L.x * L.size + j], 0.0);
     EXPECT_EQ(J[L.v * L.size + j], 0.0);
   }
+}
+
+// With the seal's random level field, the Jacobian takes the table's slope at the position:
+// the derivative of the level the integrator reads (the field varies over millimetres, so a
+// Jacobian that missed it would be wrong in the x column by the field's slope times Fc). A
+// 20 mm correlation keeps the field smooth at the differences' step (its shortest wavelength,
+// 8 mm, against a 1.2 um step), so the differences are accurate to the comparison's 1e-6.
+TEST(Plant, ExactJacobianMatchesDifferencesWithTheRandomSealLevel) {
+  Scenario s = simple_rig_scenario();
+  s.variation.seal_noise_rel = 0.1;
+  s.variation.seal_noise_correlation_m = 0.02;
+  const Plant plant(vary(s, run_seed(5, 0, 0)));
+  ASSERT_NE(plant.seal_friction().params().level_table, nullptr);
+  std::vector<double> x = plant.initial_state();
+  const StateLayout& L = plant.layout();
+  x[L.x] = 0.2;
+  x[L.v] = 0.05;
+  x[L.P1] = 3.0e5;
+  x[L.P2] = 2.0e5;
+  expect_jacobian_matches_differences(plant, plant.sliding_mode(+1), x);
 }
 
 TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {

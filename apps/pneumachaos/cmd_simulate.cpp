@@ -11,6 +11,7 @@
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/run_start.hpp"
 
 namespace pneumachaos::cli {
 namespace {
@@ -65,7 +66,11 @@ Action add_simulate(CLI::App& app) {
     for (const auto& n : scenario_notes(scenario)) fmt::print(stderr, "simulate: note: {}\n", n);
     const Plant plant(scenario);
     SimulationResult result = with_progress("simulate", "integrating", !args->quiet,
-                                            [&] { return simulate(plant, scenario.run); });
+                                            [&] {
+                                              return simulate_from(
+                                                  plant, run_start_state(plant, scenario.run),
+                                                  scenario.run);
+                                            });
     fmt::print(stderr, "simulate: {}\n",
                describe(result.summary, !plant.seal_friction().has_stiction()));
     if (!result.summary.ok()) {

@@ -30,19 +30,21 @@ void StribeckMemoryFriction::rest_state(std::span<double> z) const {
 }
 
 std::unique_ptr<FrictionModel> make_friction_model(
-    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table) {
+    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table,
+    std::shared_ptr<const TextureTable> level_table) {
   std::shared_ptr<const TextureTable>& t = texture_table;
+  std::shared_ptr<const TextureTable>& f = level_table;
   switch (params.kind) {
     case FrictionKind::kClassic:
     case FrictionKind::kStribeck:
-      if (params.lagged()) return std::make_unique<StribeckLagFriction>(params, std::move(t));
+      if (params.lagged()) return std::make_unique<StribeckLagFriction>(params, std::move(t), std::move(f));
       if (params.rate_and_state())
-        return std::make_unique<StribeckRateStateFriction>(params, std::move(t));
-      return std::make_unique<StictionFriction>(params, std::move(t));
+        return std::make_unique<StribeckRateStateFriction>(params, std::move(t), std::move(f));
+      return std::make_unique<StictionFriction>(params, std::move(t), std::move(f));
     case FrictionKind::kLuGre:
-      return std::make_unique<LuGreFriction>(params, std::move(t));
+      return std::make_unique<LuGreFriction>(params, std::move(t), std::move(f));
     case FrictionKind::kGms:
-      return std::make_unique<GmsFriction>(params, std::move(t));
+      return std::make_unique<GmsFriction>(params, std::move(t), std::move(f));
   }
   return nullptr;
 }

@@ -14,7 +14,9 @@
 // within the table's stated bound of the sines.
 
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <utility>
 #include <type_traits>
 
 #include "pneumachaos/model/friction.hpp"
@@ -22,9 +24,9 @@
 
 namespace pneumachaos::friction_law {
 
-/// Friction levels times 1 + sum(amplitude sin(wavenumber x + phase)) (docs/model.md).
+/// The bore texture's factor 1 + sum(amplitude sin(wavenumber x + phase)) (docs/model.md).
 template <typename T, typename P>
-T texture_factor(const P& p, const T& position_m) {
+T bore_texture(const P& p, const T& position_m) {
   using std::sin;
   // The Plant's table serves the double evaluations; the automatic-differentiation ones (the
   // Jacobian, the friction fits) take the sines, which differ by the table's bound at most.
@@ -36,6 +38,41 @@ T texture_factor(const P& p, const T& position_m) {
   T f(1.0);
   for (const TextureMode& m : p.texture)
     f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);
+  return f;
+}
+
+/// The seal's random level field at x (docs/model.md, "Friction"). Where the Plant tabulated
+/// it, the table is the field for every evaluation: the automatic-differentiation ones take its
+/// value and slope at x, so the Jacobian is the derivative of what the integrator sees.
+template <typename T, typename P>
+T random_level(const P& p, const T& position_m) {
+  if constexpr (std::is_same_v<P, TabulatedFriction>) {
+    if (p.level_table) {
+      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      if constexpr (std::is_same_v<T, double>) {
+        return p.level_table->at(position_m).value_or(kNaN);
+      } else {
+        const double x0 = position_m.value();
+        const auto vs = p.level_table->value_and_slope(x0).value_or(std::pair{kNaN, kNaN});
+        return T(vs.first) + vs.second * (position_m - x0);
+      }
+    }
+  }
+  using std::sin;
+  T f(0.0);
+  for (const TextureMode& m : p.level_field.modes)
+    f += m.amplitude * sin(m.wavenumber_per_m * position_m + m.phase);
+  return f;
+}
+
+/// Friction levels times the bore's factor: the texture's and, on a seal with a random level
+/// field, the field added.
+template <typename T, typename P>
+T texture_factor(const P& p, const T& position_m) {
+  T f = bore_texture(p, position_m);
+  if constexpr (requires { p.level_field; }) {
+    if (!p.level_field.modes.empty()) f += random_level(p, position_m);
+  }
   return f;
 }
 

@@ -1,9 +1,12 @@
 #include "pneumachaos/model/plant.hpp"
 
+#include "pneumachaos/core/error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "level_field.hpp"
 #include "plant_equations.hpp"
 
 namespace pneumachaos {
@@ -31,15 +34,28 @@ double rate_per_speed_over_level(const FrictionParams& p) {
 // smaller level, the pressure term only where it lowers g, the texture at its deepest), with
 // no exp or sin: the switching function checks it at every step of every run
 // (docs/notes/performance.md).
-double relaxation_rate_bound(const FrictionParams& p, const FrictionInput& in, int direction) {
+double relaxation_rate_bound(const TabulatedFriction& p, const FrictionInput& in, int direction) {
   double texture_low = 1.0;
   for (const TextureMode& m : p.texture) texture_low -= std::abs(m.amplitude);
+  if (p.level_table) texture_low += p.level_table->lowest();
   const double gauge = std::min(in.gauge_sum_Pa, 0.0);
   const double level_low = std::min(p.curve.coulomb_N + p.pressure_gain.coulomb_N_per_Pa * gauge,
                                     p.curve.static_N + p.pressure_gain.static_N_per_Pa * gauge);
   const double g_low = level_low * texture_low;
   if (!(g_low > 0.0)) return std::numeric_limits<double>::infinity();
   return rate_per_speed_over_level(p) * direction * in.v_m_per_s / g_low;
+}
+
+// A random level field deep enough to cancel the seal's friction somewhere along the bore
+// would make it push instead of resist: refused, naming the key that draws the field.
+void require_positive_level(const TabulatedFriction& p) {
+  if (!p.level_table) return;
+  double low = 1.0 + p.level_table->lowest();
+  for (const TextureMode& m : p.texture) low -= std::abs(m.amplitude);
+  if (!(low > 0.0))
+    throw Error("variation.seal_noise_rel",
+                "the random seal level (with the texture) reaches zero friction along the bore; "
+                "use a smaller relative level");
 }
 
 }  // namespace
@@ -76,14 +92,15 @@ Plant::Plant(const Scenario& scenario)
     layout_.T1 = layout_.append("T1", "K", 1.0, StateBlock::kTemperatures);
     layout_.T2 = layout_.append("T2", "K", 1.0, StateBlock::kTemperatures);
   }
-  // The bore's texture is tabulated over the stroke and a margin either side (the guide's
-  // load follows the piston through the mount); beyond it the sines are evaluated.
-  constexpr double kTextureMargin_m = 0.05;
+  // The bore's texture is tabulated over the stroke and kBoreMargin_m either side; beyond it
+  // the sines are evaluated. The seal's random level is tabulated over its period and repeats.
   const auto tabulated = [&](const FrictionParams& p) {
     return make_friction_model(
-        p, tabulate_texture(p.texture, -kTextureMargin_m, geometry_.stroke_m + kTextureMargin_m));
+        p, tabulate_texture(p.texture, -kBoreMargin_m, geometry_.stroke_m + kBoreMargin_m),
+        tabulate_level_field(p.level_field, -kBoreMargin_m));
   };
   seal_ = tabulated(scenario.friction);
+  require_positive_level(seal_->params());
   if (seal_->state_count() > 0) {
     layout_.seal_z_count = seal_->state_count();
     layout_.seal_z = layout_.append(seal_->state_name(), seal_->state_unit(), seal_->state_scale(),

@@ -393,6 +393,14 @@ void add_run_keys(std::vector<KeySpec>& k) {
       "variation.texture_wavelength_mm", "mm", "typical wavelength of the texture", 1e-3, kPositive,
       [](auto& s) -> auto& { return s.variation.texture_wavelength_m; }));
   k.push_back(number(
+      "variation.seal_noise_rel", "-",
+      "relative sd of a seeded random field of the seal's friction level along the bore", 1.0,
+      Range{0.0, 0.25}, [](auto& s) -> auto& { return s.variation.seal_noise_rel; }));
+  k.push_back(number(
+      "variation.seal_noise_correlation_mm", "mm",
+      "correlation length of the seal's random level along the bore", 1e-3, Range{0.2, 100.0},
+      [](auto& s) -> auto& { return s.variation.seal_noise_correlation_m; }));
+  k.push_back(number(
       "run.duration_s", "s", "simulated time (the run also ends at stroke end)", 1.0, kPositive,
       [](auto& s) -> auto& { return s.run.duration_s; }));
   k.push_back(number(
@@ -412,6 +420,11 @@ void add_run_keys(std::vector<KeySpec>& k) {
       "dopri5 (explicit, default) or rosenbrock4 (stiff, for stiff "
       "LuGre bristles)",
       {"dopri5", "rosenbrock4"}, [](auto& s) -> auto& { return s.run.stepper; }));
+  k.push_back(word<RunStart>(
+      "run.start",
+      "rest (against the stop, the valve switching at t = 0; default) or sliding (on the "
+      "steady motion the stability analysis finds, at its position)",
+      {"rest", "sliding"}, [](auto& s) -> auto& { return s.run.start; }));
 }
 
 // Keys of the transducers (docs/model.md, "The transducer"); 0 is the ideal transducer.

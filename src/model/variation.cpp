@@ -1,5 +1,7 @@
 #include "model/variation.hpp"
 
+#include "level_field.hpp"
+
 #include <boost/random/normal_distribution.hpp>
 #include <boost/random/uniform_real_distribution.hpp>
 
@@ -56,6 +58,13 @@ Scenario vary(const Scenario& base, std::uint64_t seed) {
   std::mt19937_64 rng(splitmix64(seed ^ 0x5eed0001ULL));
   vary_friction(s.friction, s.variation, rng);
   vary_friction(s.load.guide_friction, s.variation, rng);
+  if (s.variation.seal_noise_rel > 0.0) {
+    // A stream of its own: the scatter and the texture draw the same numbers with or without it.
+    std::mt19937_64 field_rng(splitmix64(seed ^ 0x5eed0005ULL));
+    s.friction.level_field =
+        draw_level_field(s.variation.seal_noise_rel, s.variation.seal_noise_correlation_m,
+                         s.cylinder.stroke_m + 2.0 * kBoreMargin_m, field_rng);
+  }
   return s;
 }
 

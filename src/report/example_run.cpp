@@ -5,6 +5,7 @@
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/stability/run_start.hpp"
 
 namespace pneumachaos {
 
@@ -12,7 +13,8 @@ ExampleRun run_example(const Scenario& base, double record_s, bool model_exponen
   Scenario s = base;
   s.run.duration_s = record_s;
   ExampleRun e;
-  e.sim = simulate(Plant(s), s.run);
+  const Plant plant(s);
+  e.sim = simulate_from(plant, run_start_state(plant, s.run), s.run);
   if (!e.sim.summary.ok()) throw Error("reproduce", "a simulation failed: " + e.sim.summary.message);
   const auto& v_all = e.sim.series.channel("v").values;
   e.settle = std::min(v_all.size(),

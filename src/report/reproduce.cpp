@@ -16,6 +16,7 @@
 #include "pneumachaos/report/claim_rules.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/run_start.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 #include "progress.hpp"
@@ -64,7 +65,7 @@ void claim_out_dir(const std::string& dir, const std::string& identity) {
 SimulationResult run(Scenario s, double duration_s) {
   s.run.duration_s = duration_s;
   const Plant plant(s);
-  SimulationResult r = simulate(plant, s.run);
+  SimulationResult r = simulate_from(plant, run_start_state(plant, s.run), s.run);
   if (!r.summary.ok()) throw Error("reproduce", "a simulation failed: " + r.summary.message);
   return r;
 }

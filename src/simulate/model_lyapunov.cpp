@@ -8,6 +8,7 @@
 
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
+#include "pneumachaos/simulate/simulate.hpp"
 
 namespace pneumachaos {
 
@@ -243,6 +244,12 @@ ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector
 
 ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, ModelLyapunovOptions o,
                                    double tolerance_factor) {
+  return plant_lyapunov_from(plant, rest_start(plant, run), run, o, tolerance_factor);
+}
+
+ModelLyapunovResult plant_lyapunov_from(const Plant& plant, const std::vector<double>& x0,
+                                        const RunParams& run, ModelLyapunovOptions o,
+                                        double tolerance_factor) {
   o.scales = plant.state_scales();
   o.perturbed_state = plant.layout().P1;
   o.relative_tolerance = 1e-9 * tolerance_factor;
@@ -267,7 +274,7 @@ ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run, Mod
   }
   o.max_step_s = run.max_step_s;
   o.stepper = run.stepper;
-  return model_lyapunov(plant, plant.initial_state(), o);
+  return model_lyapunov(plant, x0, o);
 }
 
 }  // namespace pneumachaos

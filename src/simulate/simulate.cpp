@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "pneumachaos/core/error.hpp"
+
 namespace pneumachaos {
 
 IntegratorOptions integrator_options(const RunParams& run) {
@@ -23,8 +25,16 @@ IntegratorOptions integrator_options(const RunParams& run) {
   return o;
 }
 
+std::vector<double> rest_start(const Plant& plant, const RunParams& run) {
+  if (run.start != RunStart::kRest)
+    throw Error("run.start",
+                "sliding: the steady motion comes from the stability analysis "
+                "(run_start_state, then simulate_from)");
+  return plant.initial_state();
+}
+
 SimulationResult simulate(const Plant& plant, const RunParams& run) {
-  return simulate_from(plant, plant.initial_state(), run);
+  return simulate_from(plant, rest_start(plant, run), run);
 }
 
 SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,

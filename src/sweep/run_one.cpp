@@ -12,6 +12,7 @@
 #include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
+#include "pneumachaos/stability/run_start.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {
@@ -42,7 +43,9 @@ void add_reason(RunRecord& r, const std::string& why) {
 // cannot be measured keeps NaN and says why (the record's verdict still stands).
 void record_model_exponent(const SweepSpec& spec, const SweepRun& run, RunRecord& r) {
   const ModelLyapunovOptions o = spec.model_exponent.options(run.scenario.run.duration_s);
-  const ModelLyapunovResult m = plant_lyapunov(Plant(run.scenario), run.scenario.run, o);
+  const Plant plant(run.scenario);
+  const ModelLyapunovResult m =
+      plant_lyapunov_from(plant, run_start_state(plant, run.scenario.run), run.scenario.run, o);
   if (!m.ok) {
     add_reason(r, "model exponent: " + m.message);
     return;
@@ -60,7 +63,8 @@ SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repe
   run.repeat = repeat;
   run.seed = run_seed(spec.seed, point, repeat);
   run.scenario = vary(scenario_at(spec.base, spec.axes, grid_index(spec.axes, point)), run.seed);
-  run.sim = simulate(Plant(run.scenario), run.scenario.run);
+  const Plant plant(run.scenario);
+  run.sim = simulate_from(plant, run_start_state(plant, run.scenario.run), run.scenario.run);
   if (!run.sim.summary.ok()) return run;
   // The analysis sees only the velocity as its transducer records it, as it would see a
   // measured record (no peeking at the model's state).

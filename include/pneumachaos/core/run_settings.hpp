@@ -8,6 +8,12 @@
 
 namespace pneumachaos {
 
+/// Where a run starts (docs/model.md, "Start and end of a run").
+enum class RunStart : std::uint8_t {
+  kRest,     ///< at rest against the stop, the valve switching at t = 0 (the paper's runs)
+  kSliding,  ///< on the steady sliding motion the stability analysis linearises about
+};
+
 struct RunParams {
   double duration_s = 10.0;
   double sample_rate_Hz = 1000.0;
@@ -15,6 +21,7 @@ struct RunParams {
   double absolute_tolerance = 1e-10;
   double max_step_s = 2e-3;  ///< bounds the step so short event excursions are not stepped over
   StepperKind stepper = StepperKind::kDopri5;
+  RunStart start = RunStart::kRest;
 };
 
 }  // namespace pneumachaos

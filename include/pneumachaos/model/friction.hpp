@@ -25,6 +25,17 @@ struct TextureMode {
   double phase = 0.0;
 };
 
+/// A random part of the seal's friction level along the bore (docs/model.md, "Friction"): a
+/// stationary Gaussian field with an exponential correlation in position, drawn per run by
+/// the variation (variation.seal_noise_rel), written as a sum of sines whose wavenumbers are
+/// all harmonics of `period_m`. The field therefore repeats every period, which is longer than
+/// the stroke: a piston whose volumes are frozen (cylinder.frozen_position_mm) may travel past
+/// the stroke and meets the same bore again, as on a rig that cycles.
+struct RandomLevelField {
+  std::vector<TextureMode> modes;  ///< empty: no random field
+  double period_m = 0.0;
+};
+
 class TextureTable;  // src/model/texture_table.hpp
 
 /// Most elements a GMS seal may have (each is one ODE state).
@@ -111,6 +122,8 @@ struct FrictionParams {
   PressureGains pressure_gain;
   /// Position-dependent texture (docs/model.md, "Friction"; docs/sweep.md); empty: uniform bore.
   std::vector<TextureMode> texture;
+  /// The seal's random level along the bore, added to the texture's factor; empty: none.
+  RandomLevelField level_field;
   LuGreBristles lugre;
   GmsElements gms;
   StribeckLag lag;
@@ -136,12 +149,15 @@ struct FrictionParams {
 };
 
 /// The parameters as a FrictionModel evaluates them: the user's, with the bore's texture
-/// tabulated along the stroke when the Plant built the model (an evaluation cache, not a
-/// parameter: docs/model.md, "Friction"); positions outside the table use the sines.
+/// tabulated along the stroke and the random level field over one period when the Plant built
+/// the model (evaluation caches, not parameters: docs/model.md, "Friction"); positions
+/// outside the texture's table use the sines, the field's table repeats with its period.
 struct TabulatedFriction : FrictionParams {
-  TabulatedFriction(const FrictionParams& p, std::shared_ptr<const TextureTable> table)
-      : FrictionParams(p), texture_table(std::move(table)) {}
+  TabulatedFriction(const FrictionParams& p, std::shared_ptr<const TextureTable> table,
+                    std::shared_ptr<const TextureTable> field)
+      : FrictionParams(p), texture_table(std::move(table)), level_table(std::move(field)) {}
   std::shared_ptr<const TextureTable> texture_table;
+  std::shared_ptr<const TextureTable> level_table;
 };
 
 /// What a friction model sees of the plant, in the scalar type of the evaluation (double,
@@ -156,10 +172,12 @@ using FrictionInput = BasicFrictionInput<double>;
 
 class FrictionModel {
  public:
-  /// `texture_table`: the texture of `p` tabulated (the Plant's; null: the sines).
+  /// `texture_table`, `level_table`: the texture and the random level field of `p`
+  /// tabulated (the Plant's; null: the sines).
   explicit FrictionModel(const FrictionParams& p,
-                         std::shared_ptr<const TextureTable> texture_table = nullptr)
-      : p_(p, std::move(texture_table)) {}
+                         std::shared_ptr<const TextureTable> texture_table = nullptr,
+                         std::shared_ptr<const TextureTable> level_table = nullptr)
+      : p_(p, std::move(texture_table), std::move(level_table)) {}
   virtual ~FrictionModel() = default;
 
   /// Internal states carried in the ODE state (LuGre: bristle deflection z [m]).
@@ -200,7 +218,8 @@ class FrictionModel {
 };
 
 std::unique_ptr<FrictionModel> make_friction_model(
-    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table = nullptr);
+    const FrictionParams& params, std::shared_ptr<const TextureTable> texture_table = nullptr,
+    std::shared_ptr<const TextureTable> level_table = nullptr);
 const char* friction_kind_name(FrictionKind kind);
 
 }  // namespace pneumachaos

@@ -61,6 +61,10 @@ struct VariationParams {
   double friction_rel_sd = 0.0;  ///< relative sd of Fc, Fs, B, vs, sigma0, sigma1 per run
   double texture_rel = 0.0;      ///< relative amplitude of the friction texture along the bore
   double texture_wavelength_m = 0.02;  ///< typical wavelength of the texture
+  /// The random seal (docs/model.md, "Friction"): relative standard deviation of the seal's
+  /// friction level along the bore, a Gaussian field drawn per run; 0: none.
+  double seal_noise_rel = 0.0;
+  double seal_noise_correlation_m = 0.005;  ///< its correlation length along the bore
 };
 
 enum class ChamberModel {

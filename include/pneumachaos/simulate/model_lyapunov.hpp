@@ -85,4 +85,9 @@ inline constexpr double kPlantMaxSeparation = 1.0;
 ModelLyapunovResult plant_lyapunov(const Plant& plant, const RunParams& run,
                                    ModelLyapunovOptions base = {}, double tolerance_factor = 1.0);
 
+/// The same from the state `x0` (a run that starts sliding: run_start_state).
+ModelLyapunovResult plant_lyapunov_from(const Plant& plant, const std::vector<double>& x0,
+                                        const RunParams& run, ModelLyapunovOptions base = {},
+                                        double tolerance_factor = 1.0);
+
 }  // namespace pneumachaos

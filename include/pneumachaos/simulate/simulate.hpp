@@ -23,7 +23,13 @@ struct SimulationResult {
 };
 
 /// Simulates from the start of a run of docs/model.md (directional valve switching at t = 0).
+/// A run with run.start = sliding starts from the steady motion, which the stability module
+/// finds (run_start_state): here it throws Error naming run.start rather than start at rest.
 SimulationResult simulate(const Plant& plant, const RunParams& run);
+
+/// The plant's state at rest (Plant::initial_state) for a run that starts at rest; throws
+/// Error naming run.start for one that starts sliding.
+std::vector<double> rest_start(const Plant& plant, const RunParams& run);
 
 /// Simulates from a given state (e.g. near an equilibrium).
 SimulationResult simulate_from(const Plant& plant, std::vector<double> initial_state,
