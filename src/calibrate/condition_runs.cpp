@@ -64,11 +64,10 @@ void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
   }
   if (!conditions.example) return;
   try {
-    // The example runs without the run-to-run variation, as reproduce's does: the scatter
-    // and texture belong to the maps' repeats.
-    Scenario example = scenario;
-    example.variation = VariationParams{};
-    add_example_inputs(inputs, run_example(example, o.example_record_s, o.example_model_exponent));
+    // The example runs without the maps' scatter and texture, as reproduce's does
+    // (run_example keeps only the seal's random level).
+    add_example_inputs(inputs,
+                       run_example(scenario, o.example_record_s, o.example_model_exponent));
   } catch (const RunError&) {
     throw;
   } catch (const Error&) {
