@@ -23,6 +23,7 @@
 #include "report/figures.hpp"
 #include "report/report_assets.hpp"
 #include "report/report_data.hpp"
+#include "report/run_traces.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -189,7 +190,7 @@ class ReportBuilder {
         fig_dir_(o.out_dir + "/figures"),
         base_(paper_conditions(o.rig ? *o.rig : default_scenario())),
         spec_(map_spec(base_, o.quick, o.full_maps)),
-        stage_(o.progress, 9, 4 * spec_.runs(), o.on_progress) {}
+        stage_(o.progress, 10, 4 * spec_.runs(), o.on_progress) {}
 
   // What this report runs, as rig.toml holds it.
   [[nodiscard]] std::string identity() const {
@@ -287,6 +288,20 @@ class ReportBuilder {
       // user's through its scenario as printed (15 digits: the runs again, to rounding).
       keep_map_data({c.name, c.title, sweep_dir, toml,
                      o_.rig ? toml : set_arguments(default_scenario(), s.base), s, maps_.back()});
+    }
+  }
+
+  // Per map, its runs' records, spectra and autocorrelations for the page's run panel: each
+  // run simulated again, as the sweep keeps no records and a replay is the same record to the
+  // last bit (its cost and the alternatives: docs/notes/explorable_report.md).
+  void run_traces() {
+    stage_.stage("run records, spectra and autocorrelations for the page");
+    std::error_code ec;
+    std::filesystem::create_directories(o_.out_dir + "/runs", ec);
+    if (ec) throw Error(o_.out_dir + "/runs", "cannot create: " + ec.message());
+    for (const MapData& m : map_data_) {
+      write_file(o_.out_dir + "/" + runs_file(m),
+                 run_traces_js(m, map_run_keys(m, o_.out_dir), o_.threads));
     }
   }
 
@@ -395,6 +410,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   report.friction_loops();
   report.stability();
   report.maps();
+  report.run_traces();
   return report.finish();
 }
 
