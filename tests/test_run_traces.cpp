@@ -16,8 +16,8 @@ std::vector<double> decode(const std::string& q, double lo, double hi) {
   const std::string a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::vector<double> out;
   for (std::size_t k = 0; k + 1 < q.size(); k += 2)
-    out.push_back(lo + (hi - lo) * static_cast<double>(a.find(q[k]) * 64 + a.find(q[k + 1])) /
-                           4095.0);
+    out.push_back(lo +
+                  (hi - lo) * static_cast<double>(a.find(q[k]) * 64 + a.find(q[k + 1])) / 4095.0);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <optional>
 
 #include "pneumachaos/core/error.hpp"
@@ -278,6 +279,8 @@ class ReportBuilder {
       so.threads = o_.threads;
       so.progress = o_.progress;
       so.on_progress = [this](std::size_t done, std::size_t) { stage_.sweep_runs(done); };
+      RunTraces& traces = *traces_.emplace_back(std::make_unique<RunTraces>());
+      so.on_run = [&traces](const SweepRun& r) { traces.keep(r); };
       // A second run of reproduce resumes (or re-reads) the sweeps of the first.
       so.resume = true;
       maps_.push_back(run_sweep(s, so));
@@ -291,17 +294,18 @@ class ReportBuilder {
     }
   }
 
-  // Per map, its runs' records, spectra and autocorrelations for the page's run panel: each
-  // run simulated again, as the sweep keeps no records and a replay is the same record to the
-  // last bit (its cost and the alternatives: docs/notes/explorable_report.md).
+  // Per map, its runs' records, spectra and autocorrelations for the page's run panel, as the
+  // sweeps kept them; a run a sweep resumed from its journal is simulated again (the same
+  // record to the last bit; docs/notes/explorable_report.md).
   void run_traces() {
     stage_.stage("run records, spectra and autocorrelations for the page");
     std::error_code ec;
     std::filesystem::create_directories(o_.out_dir + "/runs", ec);
     if (ec) throw Error(o_.out_dir + "/runs", "cannot create: " + ec.message());
-    for (const MapData& m : map_data_) {
+    for (std::size_t i = 0; i < map_data_.size(); ++i) {
+      const MapData& m = map_data_[i];
       write_file(o_.out_dir + "/" + runs_file(m),
-                 run_traces_js(m, map_run_keys(m, o_.out_dir), o_.threads));
+                 traces_[i]->js(m, map_run_keys(m, o_.out_dir), o_.threads));
     }
   }
 
@@ -389,6 +393,7 @@ class ReportBuilder {
   StabilityMap smap_;
   std::vector<SweepSummary> maps_;
   std::vector<MapData> map_data_;
+  std::vector<std::unique_ptr<RunTraces>> traces_;  ///< per map, filled by its sweep's workers
 };
 
 }  // namespace

@@ -61,19 +61,18 @@ Json acf_json(const Autocorrelation& a) {
 
 // One run's traces, or why it has none. The spectrum and autocorrelation are those the
 // sweep's verdict read (analyze_series with the sweep's default spectrum options).
-Json trace_json(const SweepSpec& spec, const RunKey& k) {
+Json trace_json(const SweepRun& run) {
   try {
-    const SweepRun run = simulate_run(spec, k.point, k.repeat);
     if (!run.sim.summary.ok()) return {{"error", run.sim.summary.message}};
     const std::vector<double>& v = run.measured_v;
     const double rate = run.sim.series.rate_Hz();
     const std::vector<double> shown = min_max_decimate(v, kRecordBuckets);
     const double span = static_cast<double>(v.size() - 1) / rate;
-    Json j = {{"samples", v.size()},
-              {"rate_Hz", rate},
-              {"v", series_json(shown, 0.0,
-                                shown.size() > 1 ? span / static_cast<double>(shown.size() - 1)
-                                                 : 0.0)}};
+    Json j = {
+        {"samples", v.size()},
+        {"rate_Hz", rate},
+        {"v", series_json(shown, 0.0,
+                          shown.size() > 1 ? span / static_cast<double>(shown.size() - 1) : 0.0)}};
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
     if (*lo == *hi) {
       j["note"] = "a constant record: no spectrum or autocorrelation";
@@ -82,7 +81,20 @@ Json trace_json(const SweepSpec& spec, const RunKey& k) {
     j["spectrum"] = spectrum_json(welch_spectrum(v, rate, AnalysisOptions{}.spectrum));
     j["acf"] = acf_json(autocorrelation(v, rate));
     return j;
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {
+    return {{"error", e.what()}};
+  }
+}
+
+// As JSON text; a message that is not UTF-8 is kept with its bad bytes replaced.
+std::string text_of(const Json& j) {
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+Json simulated_trace(const SweepSpec& spec, const RunKey& k) {
+  try {
+    return trace_json(simulate_run(spec, k.point, k.repeat));
+  } catch (const std::exception& e) {
     return {{"error", e.what()}};
   }
 }
@@ -99,8 +111,8 @@ std::string quantise_series(const std::vector<double>& values, double& lo, doubl
   std::string q;
   q.reserve(2 * values.size());
   for (double x : values) {
-    const int code = std::isfinite(x) ? static_cast<int>(std::lround((x - lo) / range * kLevels))
-                                      : 0;
+    const int code =
+        std::isfinite(x) ? static_cast<int>(std::lround((x - lo) / range * kLevels)) : 0;
     q += kAlphabet[code / 64];
     q += kAlphabet[code % 64];
   }
@@ -121,17 +133,31 @@ std::vector<double> min_max_decimate(const std::vector<double>& x, std::size_t b
   return out;
 }
 
-std::string run_traces_js(const MapData& map, const std::vector<RunKey>& runs,
+void RunTraces::keep(const SweepRun& run) {
+  std::string text = text_of(trace_json(run));
+  const std::lock_guard<std::mutex> lock(mutex_);
+  traces_[{run.point, run.repeat}] = std::move(text);
+}
+
+std::string RunTraces::js(const MapData& map, const std::vector<RunKey>& runs,
                           std::size_t threads) {
-  std::vector<Json> traces(runs.size());
-  auto one = [&](std::size_t i) { traces[i] = trace_json(map.spec, runs[i]); };
+  std::vector<RunKey> missing;
+  for (const RunKey& k : runs)
+    if (traces_.count({k.point, k.repeat}) == 0) missing.push_back(k);
+  auto one = [&](std::size_t i) {
+    std::string text = text_of(simulated_trace(map.spec, missing[i]));
+    const std::lock_guard<std::mutex> lock(mutex_);
+    traces_[{missing[i].point, missing[i].repeat}] = std::move(text);
+  };
   tbb::task_arena arena(threads > 0 ? static_cast<int>(threads) : tbb::task_arena::automatic);
-  arena.execute([&] { detail::parallel_indices(runs.size(), one); });
-  Json all = Json::object();
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    all[fmt::format("{}:{}", runs[i].point, runs[i].repeat)] = std::move(traces[i]);
-  return fmt::format("(window.PNEUMACHAOS_RUNS = window.PNEUMACHAOS_RUNS || {{}})[\"{}\"] = {};\n",
-                     map.figure, all.dump());
+  arena.execute([&] { detail::parallel_indices(missing.size(), one); });
+  std::string all;
+  for (const RunKey& k : runs)
+    all += fmt::format("{}\"{}:{}\":{}", all.empty() ? "{" : ",", k.point, k.repeat,
+                       traces_.at({k.point, k.repeat}));
+  return fmt::format(
+      "(window.PNEUMACHAOS_RUNS = window.PNEUMACHAOS_RUNS || {{}})[\"{}\"] = {}}};\n", map.figure,
+      all.empty() ? "{" : all);
 }
 
 }  // namespace pneumachaos

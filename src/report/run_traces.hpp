@@ -4,7 +4,10 @@
 // quantised for display (runs/FIGURE.js, read by src/report/assets/report.js).
 
 #include <cstddef>
+#include <map>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/report_data.hpp"
@@ -22,11 +25,24 @@ std::string quantise_series(const std::vector<double>& values, double& lo, doubl
 /// when it has no more than 2 x buckets values.
 std::vector<double> min_max_decimate(const std::vector<double>& x, std::size_t buckets);
 
-/// runs/FIGURE.js: the script that adds the map's runs to window.PNEUMACHAOS_RUNS[FIGURE]
-/// ("POINT:REPEAT" -> traces). Each run is simulated again as the sweep ran it (simulate_run:
-/// the same record to the last bit) and analysed with the analysis library's spectrum and
-/// autocorrelation under the sweep's options, on `threads` threads (0: all).
-std::string run_traces_js(const MapData& map, const std::vector<RunKey>& runs,
-                          std::size_t threads);
+/// One map's run traces: the record the sweep judged, cut for display, and its spectrum and
+/// autocorrelation as the analysis library computes them under the sweep's options. Kept while
+/// the sweep runs (keep, as its SweepOptions::on_run), so no run is simulated twice.
+class RunTraces {
+ public:
+  /// Keeps a simulated run's traces; thread-safe, never throws (a run with no traces keeps why).
+  void keep(const SweepRun& run);
+
+  /// runs/FIGURE.js: the script that adds the map's runs to window.PNEUMACHAOS_RUNS[FIGURE]
+  /// ("POINT:REPEAT" -> traces). A run not kept (its sweep resumed from the journal, or ran on
+  /// another MPI rank) is simulated again here (simulate_run: the same record to the last
+  /// bit), on `threads` threads (0: all).
+  [[nodiscard]] std::string js(const MapData& map, const std::vector<RunKey>& runs,
+                               std::size_t threads);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::pair<std::size_t, std::size_t>, std::string> traces_;  ///< JSON, by run
+};
 
 }  // namespace pneumachaos
