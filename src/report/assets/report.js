@@ -153,12 +153,16 @@
     const all = window.PNEUMACHAOS_RUNS;
     if (all && all[map.figure]) return then(all[map.figure]);
     let s = document.querySelector(`script[data-traces="${map.figure}"]`);
+    if (s && s.dataset.failed) return then(null);  // an error event is not sent twice
     if (!s) {
       s = el('script', { src: map.runs_file, 'data-traces': map.figure });
       document.head.appendChild(s);
     }
     s.addEventListener('load', () => then((window.PNEUMACHAOS_RUNS || {})[map.figure] || null));
-    s.addEventListener('error', () => then(null));
+    s.addEventListener('error', () => {
+      s.dataset.failed = 'yes';
+      then(null);
+    });
     return undefined;
   }
 
