@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # report_explore.sh CLI: writes a quick report and explores it in headless Chromium through
 # puppeteer-core (tests/browser/explore_report.mjs): a map cell's tooltip and runs against
-# runs.csv, a claim's link and marked cells, no console message, no network, usable within
+# runs.csv, its runs' charts against runs/FIGURE.js and runs.csv, the same cell marked on the
+# other maps, a claim's link and marked cells, no console message, no network, usable within
 # 2 s, screenshots at two widths. Exits 77 (CTest's SKIP_RETURN_CODE) when node, chromium or
 # tests/browser/node_modules (scripts/setup.sh installs them) are missing.
 set -uo pipefail

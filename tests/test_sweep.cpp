@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
@@ -128,6 +130,29 @@ TEST(Sweep, ResultsDoNotDependOnTheThreadCount) {
   }
   std::filesystem::remove_all(one);
   std::filesystem::remove_all(two);
+}
+
+// on_run sees every run the sweep simulates, with the record its verdict is made on.
+TEST(Sweep, OnRunSeesEachSimulatedRunsRecord) {
+  const SweepSpec spec = small_spec({"variation.friction_rel_sd=0.05"});
+  const std::string dir = temp_dir("on_run");
+  std::mutex mutex;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> seen;
+  SweepOptions o;
+  o.progress = false;
+  o.out_dir = dir;
+  o.threads = 2;
+  o.on_run = [&](const SweepRun& r) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    seen[{r.point, r.repeat}] = r.measured_v;
+  };
+  run_sweep(spec, o);
+  ASSERT_EQ(seen.size(), spec.runs());
+  for (const auto& [run, v] : seen) {
+    EXPECT_FALSE(v.empty());
+    EXPECT_EQ(v, simulate_run(spec, run.first, run.second).measured_v);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Sweep, ResumeSkipsFinishedRunsCutsATornLineAndRefusesAnotherSpec) {

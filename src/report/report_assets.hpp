@@ -5,7 +5,7 @@
 
 namespace pneumachaos {
 
-/// Writes report.js and report.css into the report folder `dir`.
+/// Writes report.js, report_charts.js and report.css into the report folder `dir`.
 void write_report_assets(const std::string& dir);
 
 }  // namespace pneumachaos

@@ -29,6 +29,17 @@ struct RunsTable {
   std::map<std::size_t, std::vector<std::vector<std::string>>> by_point;
 };
 
+std::size_t column(const RunsTable& t, const std::string& name, const std::string& path) {
+  std::size_t i = 0;
+  while (i < t.columns.size() && t.columns[i] != name) ++i;
+  if (i == t.columns.size()) throw Error(path, "has no " + name + " column");
+  return i;
+}
+
+std::string runs_path(const MapData& m, const std::string& report_dir) {
+  return report_dir + "/" + m.sweep_dir + "/runs.csv";
+}
+
 RunsTable read_runs(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw Error(path, "cannot read the map's runs for report_data.js");
@@ -36,9 +47,7 @@ RunsTable read_runs(const std::string& path) {
   std::string line;
   std::getline(in, line);
   t.columns = split_csv_fields(line);
-  std::size_t point_col = 0;
-  while (point_col < t.columns.size() && t.columns[point_col] != "point") ++point_col;
-  if (point_col == t.columns.size()) throw Error(path, "has no point column");
+  const std::size_t point_col = column(t, "point", path);
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     std::vector<std::string> f = split_csv_fields(line);
@@ -68,7 +77,7 @@ Json cell_json(const PointSummary& p, const RunsTable& runs) {
 }
 
 Json map_json(const MapData& m, const std::string& report_dir) {
-  const RunsTable runs = read_runs(report_dir + "/" + m.sweep_dir + "/runs.csv");
+  const RunsTable runs = read_runs(runs_path(m, report_dir));
   Json cells = Json::array();
   for (const PointSummary& p : m.summary.per_point) cells.push_back(cell_json(p, runs));
   return {{"figure", m.figure},
@@ -82,6 +91,7 @@ Json map_json(const MapData& m, const std::string& report_dir) {
           // A run's command is this with " --replay P:R -o run_P_R.csv": written once per map,
           // as the full map would otherwise carry it thousands of times.
           {"replay", "pneumachaos sweep " + replay_arguments(m)},
+          {"runs_file", runs_file(m)},
           {"columns", runs.columns},
           {"cells", cells}};
 }
@@ -98,6 +108,18 @@ std::string set_arguments(const Scenario& from, const Scenario& to) {
   }
   return s;
 }
+
+std::vector<RunKey> map_run_keys(const MapData& m, const std::string& report_dir) {
+  const std::string path = runs_path(m, report_dir);
+  const RunsTable runs = read_runs(path);
+  const std::size_t repeat_col = column(runs, "repeat", path);
+  std::vector<RunKey> keys;
+  for (const auto& [point, rows] : runs.by_point)
+    for (const auto& f : rows) keys.push_back({point, std::stoul(f[repeat_col])});
+  return keys;
+}
+
+std::string runs_file(const MapData& m) { return "runs/" + m.figure + ".js"; }
 
 std::string replay_arguments(const MapData& m) {
   std::string s = m.scenario_args.empty() ? "" : m.scenario_args + " ";

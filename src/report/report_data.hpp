@@ -29,6 +29,17 @@ struct MapData {
 /// last bit) and a run's record depends on every bit.
 std::string set_arguments(const Scenario& from, const Scenario& to);
 
+/// One run of a sweep: its grid point and repeat.
+struct RunKey {
+  std::size_t point = 0, repeat = 0;
+};
+
+/// The runs of a map that runs.csv under report_dir holds, in its order.
+std::vector<RunKey> map_run_keys(const MapData& map, const std::string& report_dir);
+
+/// The map's run traces for the page, relative to the report folder (runs/FIGURE.js).
+std::string runs_file(const MapData& map);
+
 /// `sweep` arguments that name one map's grid, repeats and seed, so that `--replay P:R`
 /// added to them runs one of its runs again (docs/sweep.md, "What a run stores").
 std::string replay_arguments(const MapData& map);

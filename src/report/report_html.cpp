@@ -144,6 +144,7 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
        "texture).</p>\n<pre>" +
        escape(scenario_toml) +
        "</pre>\n<script src=\"report_data.js\"></script>\n"
+       "<script src=\"report_charts.js\"></script>\n"
        "<script src=\"report.js\"></script>\n</body></html>\n";
   return h;
 }

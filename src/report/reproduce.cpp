@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <optional>
 
 #include "pneumachaos/core/error.hpp"
@@ -24,6 +25,7 @@
 #include "report/figures.hpp"
 #include "report/report_assets.hpp"
 #include "report/report_data.hpp"
+#include "report/run_traces.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -190,7 +192,7 @@ class ReportBuilder {
         fig_dir_(o.out_dir + "/figures"),
         base_(paper_conditions(o.rig ? *o.rig : default_scenario())),
         spec_(map_spec(base_, o.quick, o.full_maps)),
-        stage_(o.progress, 9, 4 * spec_.runs(), o.on_progress) {}
+        stage_(o.progress, 10, 4 * spec_.runs(), o.on_progress) {}
 
   // What this report runs, as rig.toml holds it.
   [[nodiscard]] std::string identity() const {
@@ -278,6 +280,8 @@ class ReportBuilder {
       so.threads = o_.threads;
       so.progress = o_.progress;
       so.on_progress = [this](std::size_t done, std::size_t) { stage_.sweep_runs(done); };
+      RunTraces& traces = *traces_.emplace_back(std::make_unique<RunTraces>());
+      so.on_run = [&traces](const SweepRun& r) { traces.keep(r); };
       // A second run of reproduce resumes (or re-reads) the sweeps of the first.
       so.resume = true;
       maps_.push_back(run_sweep(s, so));
@@ -288,6 +292,21 @@ class ReportBuilder {
       // user's through its scenario as printed (15 digits: the runs again, to rounding).
       keep_map_data({c.name, c.title, sweep_dir, toml,
                      o_.rig ? toml : set_arguments(default_scenario(), s.base), s, maps_.back()});
+    }
+  }
+
+  // Per map, its runs' records, spectra and autocorrelations for the page's run panel, as the
+  // sweeps kept them; a run a sweep resumed from its journal is simulated again (the same
+  // record to the last bit; docs/notes/explorable_report.md).
+  void run_traces() {
+    stage_.stage("run records, spectra and autocorrelations for the page");
+    std::error_code ec;
+    std::filesystem::create_directories(o_.out_dir + "/runs", ec);
+    if (ec) throw Error(o_.out_dir + "/runs", "cannot create: " + ec.message());
+    for (std::size_t i = 0; i < map_data_.size(); ++i) {
+      const MapData& m = map_data_[i];
+      write_file(o_.out_dir + "/" + runs_file(m),
+                 traces_[i]->js(m, map_run_keys(m, o_.out_dir), o_.threads));
     }
   }
 
@@ -375,6 +394,7 @@ class ReportBuilder {
   StabilityMap smap_;
   std::vector<SweepSummary> maps_;
   std::vector<MapData> map_data_;
+  std::vector<std::unique_ptr<RunTraces>> traces_;  ///< per map, filled by its sweep's workers
 };
 
 }  // namespace
@@ -396,6 +416,7 @@ ReproduceResult reproduce(const ReproduceOptions& o) {
   report.friction_loops();
   report.stability();
   report.maps();
+  report.run_traces();
   return report.finish();
 }
 

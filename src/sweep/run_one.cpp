@@ -105,8 +105,15 @@ RunRecord judge_run(const SweepSpec& spec, const SweepRun& run) {
 }
 
 RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat) {
+  return run_one(spec, point, repeat, {});
+}
+
+RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat,
+                  const std::function<void(const SweepRun&)>& observe) {
   try {
-    return judge_run(spec, simulate_run(spec, point, repeat));
+    const SweepRun run = simulate_run(spec, point, repeat);
+    if (observe) observe(run);
+    return judge_run(spec, run);
   } catch (const Error& e) {
     RunRecord r;
     r.point = point;

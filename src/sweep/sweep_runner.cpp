@@ -90,9 +90,9 @@ std::size_t thread_count(std::size_t requested, std::size_t work,
 // run_one turns bad input into a failed record; anything else it lets escape (a bug, memory
 // exhaustion) becomes a failed record here too, so a worker thread never terminates the
 // process and the other runs are kept.
-RunRecord guarded_run(const SweepSpec& spec, std::size_t i) {
+RunRecord guarded_run(const SweepSpec& spec, std::size_t i, const SweepOptions& options) {
   try {
-    return run_one(spec, i / spec.repeats, i % spec.repeats);
+    return run_one(spec, i / spec.repeats, i % spec.repeats, options.on_run);
   } catch (const std::exception& e) {
     RunRecord r;
     r.point = i / spec.repeats;
@@ -143,7 +143,7 @@ void run_pending(const SweepSpec& spec, const SweepOptions& options,
   std::atomic<bool> stop{false};
   const auto one = [&](std::size_t k) {
     if (stop) return;  // the journal failed: take no new runs
-    RunRecord r = guarded_run(spec, pending[k]);
+    RunRecord r = guarded_run(spec, pending[k], options);
     std::lock_guard<std::mutex> lock(mutex);
     if (failure) return;
     try {

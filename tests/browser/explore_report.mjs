@@ -1,5 +1,6 @@
 // Drives headless Chromium through a written report as a reader would (tests/report_explore.sh):
-// hovers and clicks a map cell and checks the panel against the map's runs.csv, follows a
+// hovers and clicks a map cell and checks the panel against the map's runs.csv, its runs'
+// charts against runs/FIGURE.js and runs.csv, the same cell marked on the other maps, follows a
 // claim's link and checks the cells it marks against points.csv, times the page, takes
 // screenshots at two widths. Any console error or warning, page error or request that is not
 // a file of the report fails the test.
@@ -60,6 +61,7 @@ async function checkCell(page) {
   const tip = await page.$eval('#tip', (t) => (t.hidden ? '' : t.textContent));
   if (!tip.includes(`${map.x} = ${mine[0][map.x]}`) || !tip.includes(mine[0].regime))
     fail(`tooltip of point ${point}: "${tip}"`);
+  const clicked = Date.now();
   await page.click(cell);
   const rows = await page.$$eval('#panel table.runs tr[data-repeat]', (trs) => trs.map((tr) =>
     Object.fromEntries([...tr.querySelectorAll('td[data-col]')]
@@ -77,6 +79,77 @@ async function checkCell(page) {
   if (commands.length !== map.repeats || !commands[0].includes(`--replay ${point}:0`))
     fail(`replay commands: ${commands.join(' | ')}`);
   console.log(`cell ${point}: ${rows.length} runs as in runs.csv`);
+  await checkCharts(page, mine, clicked);
+  await checkTwins(page, point);
+}
+
+// The map's runs/FIGURE.js as the page reads it: "POINT:REPEAT" -> traces.
+function traces(file) {
+  const s = fs.readFileSync(path.join(dir, file), 'utf8');
+  return JSON.parse(s.slice(s.indexOf('] = ') + 4, s.lastIndexOf(';')));
+}
+// A series' first value, decoded here independently of the page's own decoder.
+function firstValue(s) {
+  const a = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/';
+  return s.lo + (s.hi - s.lo) * (a.indexOf(s.q[0]) * 64 + a.indexOf(s.q[1])) / 4095;
+}
+
+// Each run's charts: drawn within 2 s of the click, from that run's traces (point count and
+// first value against the data file), and the traces from that run (the spectrum's broadband
+// share and the ACF's late envelope equal the ones runs.csv holds, to the last digit).
+async function checkCharts(page, mine, clicked) {
+  await page.waitForSelector('#panel .run svg.chart', { timeout: 5000 }).catch(() => {});
+  const ms = Date.now() - clicked;
+  console.log(`run charts drawn ${ms} ms after the click`);
+  if (ms > 2000) fail('the run charts took more than 2 s');
+  const file = await page.evaluate(() => window.PNEUMACHAOS_REPORT.maps[0].runs_file);
+  const all = traces(file);
+  for (const r of mine) {
+    const key = `${r.point}:${r.repeat}`, t = all[key];
+    if (!t || !t.v) { fail(`${file} has no record of run ${key}`); continue; }
+    const drawn = await page.$$eval(`#panel .run[data-run="${key}"] svg.chart`, (c) => c.map((e) =>
+      ({ kind: e.dataset.kind, n: +e.dataset.n, first: +e.dataset.first,
+         points: e.querySelector('polyline').getAttribute('points').split(' ').length })));
+    const want = { v: t.v, spectrum: t.spectrum, acf: t.acf };
+    for (const [kind, s] of Object.entries(want)) {
+      const c = drawn.find((d) => d.kind === kind);
+      if (!s) continue;
+      if (!c || c.n !== s.n || c.points !== s.n || Math.abs(c.first - firstValue(s)) > 1e-12)
+        fail(`run ${key} ${kind} chart ${JSON.stringify(c)}; ${file}: ${s.n} points, ` +
+          `first ${firstValue(s)}`);
+    }
+    if (!t.spectrum || !t.acf ||
+        Number(t.spectrum.broadband_share) !== Number(r.broadband_share) ||
+        Number(t.acf.late_acf) !== Number(r.late_acf))
+      fail(`run ${key}'s traces are not its record: ${JSON.stringify([t.spectrum, t.acf])}, ` +
+        `runs.csv broadband ${r.broadband_share}, late ACF ${r.late_acf}`);
+  }
+  console.log(`run charts of ${mine.length} runs match ${file} and runs.csv`);
+}
+
+// The same S1, S2 on the other maps: marked when the cell is open and when one is hovered,
+// and compared in the panel's table.
+async function checkTwins(page, point) {
+  const maps = await page.evaluate(() => window.PNEUMACHAOS_REPORT.maps.map((m) => m.cells));
+  const at = (k, p) => maps[k].find((c) => c.point === p);
+  const marked = (cls) => page.$$eval(`.cell.${cls}`, (g) => g.map((e) =>
+    [+e.dataset.map, +e.dataset.point]));
+  const expect = (got, from, p, what) => {
+    const want = maps.map((m, k) => k).filter((k) => k !== from);
+    if (got.map(([k]) => k).join() !== want.join() ||
+        got.some(([k, q]) => at(k, q).x !== at(from, p).x || at(k, q).y !== at(from, p).y))
+      fail(`${what}: marked ${JSON.stringify(got)}, want point ${p} on maps ${want}`);
+  };
+  expect(await marked('same'), 0, Number(point), 'the open cell elsewhere');
+  const rows = await page.$$eval('#panel table.compare tr[data-map]', (r) => r.map((e) =>
+    [+e.dataset.map, +e.dataset.x, +e.dataset.y]));
+  const c = at(0, Number(point));
+  if (rows.length !== maps.length || rows.some(([, x, y]) => x !== c.x || y !== c.y))
+    fail(`the compare table: ${JSON.stringify(rows)}`);
+  const other = maps[1][maps[1].length - 1].point;
+  await page.hover(`.cell[data-map="1"][data-point="${other}"]`);
+  expect(await marked('twin'), 1, other, 'the hovered cell elsewhere');
+  console.log(`cell ${point} marked on ${maps.length - 1} other maps; hovered ${other} too`);
 }
 
 // fig4_border's link: it leads to the Fig. 4 map and marks the points within one grid step

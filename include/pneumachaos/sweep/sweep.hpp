@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -128,6 +129,12 @@ SweepRun simulate_run(const SweepSpec& spec, std::size_t point, std::size_t repe
 
 /// The record of a simulated run: what run_one stores for it.
 RunRecord judge_run(const SweepSpec& spec, const SweepRun& run);
+
+/// run_one, handing each simulated run to `observe` before it is judged (not called when the
+/// simulation throws): for a caller that keeps what runs.csv does not, such as the record.
+/// Runs on the caller's thread; observe must not throw.
+RunRecord run_one(const SweepSpec& spec, std::size_t point, std::size_t repeat,
+                  const std::function<void(const SweepRun&)>& observe);
 
 /// One run of the sweep again, bit for bit (`sweep --replay`, the Python module's replay): the
 /// spec validated, the run simulated and judged. Throws Error named `name` (what the user

@@ -19,6 +19,11 @@ struct SweepOptions {
   /// that finished it, one call at a time; for callers that show progress their own way
   /// (a notebook). It must not throw.
   std::function<void(std::size_t, std::size_t)> on_progress;
+  /// Called with each run this process simulates, before it is judged, from the worker running
+  /// it, concurrently with other runs' calls: for callers that keep what runs.csv does not (the
+  /// report keeps each run's record for its page). Not called for runs the journal already
+  /// holds (resume) or that other MPI ranks run. It must not throw.
+  std::function<void(const SweepRun&)> on_run;
   void validate() const;
 };
 

@@ -1,7 +1,9 @@
 // The report's explorable maps: each map of report_data.js drawn as an SVG grid; hovering a
-// cell shows its incidences, clicking it lists its runs as runs.csv holds them. Plain DOM
-// and SVG, no library: the page must work from disk with no network
-// (docs/notes/explorable_report.md says why no charting library is vendored).
+// cell shows its incidences and marks the same cell on the other maps, clicking it lists its
+// runs as runs.csv holds them with each run's record, spectrum and autocorrelation (loaded per
+// map from runs/FIGURE.js on the first click: the full report's traces are megabytes) and
+// compares the cell across the maps. Plain DOM and SVG, no library: the page must work from
+// disk with no network (docs/notes/explorable_report.md says why no library is vendored).
 (function () {
   'use strict';
   const data = window.PNEUMACHAOS_REPORT;
@@ -114,19 +116,89 @@
     return t;
   }
 
-  function sameCellElsewhere(cell, index) {
-    const p = el('p', { class: 'compare' }, 'The same cell on every map: ');
+  // The same S1, S2 on every map (one grid, so one point index): its incidences and verdicts
+  // across supply pressure and load, each row opening that map's cell.
+  function compareTable(cell, index) {
+    const t = el('table', { class: 'compare' });
+    t.appendChild(el('caption', {}, 'The same cell on every map'));
+    const head = el('tr');
+    ['map', 'chaos', 'stick-slip', 'verdicts'].forEach((h) => head.appendChild(el('th', {}, h)));
+    t.appendChild(head);
     data.maps.forEach((m, k) => {
       const c = m.cells.find((q) => q.point === cell.point);
       if (!c) return;
-      const a = el('a', { href: `#explore-${m.figure}` },
-        `${m.title}: chaos ${pct(c.chaos)}, stick-slip ${pct(c.stick_slip)}`);
-      if (k === index) a.className = 'current';
+      const tr = el('tr', { 'data-map': k, 'data-x': c.x, 'data-y': c.y });
+      if (k === index) tr.className = 'current';
+      const a = el('a', { href: `#explore-${m.figure}` }, m.title);
       a.addEventListener('click', () => openCell(k, cell.point));
-      p.appendChild(a);
-      p.appendChild(document.createTextNode(k + 1 < data.maps.length ? ' · ' : ''));
+      tr.appendChild(el('td')).appendChild(a);
+      [pct(c.chaos), pct(c.stick_slip), verdicts(m, c)].forEach((v) =>
+        tr.appendChild(el('td', {}, v)));
+      t.appendChild(tr);
     });
-    return p;
+    return t;
+  }
+
+  // Marks with `cls` the cell of `point` on every map but `index` (none: point < 0).
+  function markTwins(cls, index, point) {
+    document.querySelectorAll(`.cell.${cls}`).forEach((g) => g.classList.remove(cls));
+    if (point < 0) return;
+    document.querySelectorAll(`.cell[data-point="${point}"]`).forEach((g) => {
+      if (+g.dataset.map !== index) g.classList.add(cls);
+    });
+  }
+
+  // Calls then(traces) with the map's runs/FIGURE.js once loaded (null if it cannot be).
+  function withTraces(map, then) {
+    const all = window.PNEUMACHAOS_RUNS;
+    if (all && all[map.figure]) return then(all[map.figure]);
+    let s = document.querySelector(`script[data-traces="${map.figure}"]`);
+    if (s && s.dataset.failed) return then(null);  // an error event is not sent twice
+    if (!s) {
+      s = el('script', { src: map.runs_file, 'data-traces': map.figure });
+      document.head.appendChild(s);
+    }
+    s.addEventListener('load', () => then((window.PNEUMACHAOS_RUNS || {})[map.figure] || null));
+    s.addEventListener('error', () => {
+      s.dataset.failed = 'yes';
+      then(null);
+    });
+    return undefined;
+  }
+
+  // Per run: its charts (filled when the map's traces are loaded) and the command that runs
+  // it alone and writes its full record as CSV.
+  function runSections(map, cell) {
+    const box = el('div', { class: 'runsections' });
+    for (let r = 0; r < map.repeats; ++r) {
+      const key = `${cell.point}:${r}`;
+      const sec = el('div', { class: 'run', 'data-run': key });
+      sec.appendChild(el('h4', {}, `Run ${key}`));
+      sec.appendChild(el('div', { class: 'slot' }, cell.rows.length
+        ? 'loading its record…' : 'not run (inferred): the command below runs it'));
+      sec.appendChild(el('p', {}, 'Its full record (every sample, as CSV) and the run again, ' +
+        'alone (a scenario file it names is in figures/, beside this page):'));
+      sec.appendChild(el('pre', { class: 'replay' },
+        `${map.replay} --replay ${key} -o run_${cell.point}_${r}.csv`));
+      box.appendChild(sec);
+    }
+    return box;
+  }
+
+  function fillCharts(panel, open, traces) {
+    if (panel.dataset.open !== open) return;  // another cell was opened meanwhile
+    panel.querySelectorAll('.run').forEach((sec) => {
+      const slot = sec.querySelector('.slot');
+      const t = traces && traces[sec.dataset.run];
+      if (!t) {
+        slot.textContent = traces ? 'no record (not run)' : 'the run traces could not be loaded';
+      } else if (t.error) {
+        slot.textContent = `no record: ${t.error}`;
+      } else {
+        slot.replaceChildren(window.PNEUMACHAOS_CHARTS.runCharts(t));
+        if (t.note) slot.appendChild(el('p', {}, t.note));
+      }
+    });
   }
 
   function openCell(index, point) {
@@ -142,17 +214,15 @@
       : '') + `. All columns: ${map.sweep}/runs.csv ` +
       '(surrogate rank: the maps run no surrogate test).'));
     if (cell.rows.length) panel.appendChild(runTable(map, cell));
-    panel.appendChild(el('p', {},
-      'Each run again, alone (a scenario file it names is in figures/, beside this page):'));
-    for (let r = 0; r < map.repeats; ++r) {
-      panel.appendChild(el('pre', { class: 'replay' },
-        `${map.replay} --replay ${cell.point}:${r} -o run_${cell.point}_${r}.csv`));
-    }
-    panel.appendChild(sameCellElsewhere(cell, index));
+    panel.appendChild(compareTable(cell, index));
+    panel.appendChild(runSections(map, cell));
     document.querySelectorAll('.cell.open').forEach((g) => g.classList.remove('open'));
     document.querySelector(`.cell[data-map="${index}"][data-point="${point}"]`)
       .classList.add('open');
+    markTwins('same', index, point);
+    panel.dataset.open = `${index}:${point}`;
     panel.hidden = false;
+    if (cell.rows.length) withTraces(map, (t) => fillCharts(panel, `${index}:${point}`, t));
   }
 
   function bindCells(root, tip) {
@@ -162,12 +232,17 @@
       const map = data.maps[g.dataset.map];
       tip.textContent = tooltipText(map, map.cells.find((c) => c.point === +g.dataset.point));
       tip.hidden = false;
+      markTwins('twin', +g.dataset.map, +g.dataset.point);
     });
     root.addEventListener('mousemove', (e) => {
       tip.style.left = `${e.pageX + 12}px`;
       tip.style.top = `${e.pageY + 12}px`;
     });
-    root.addEventListener('mouseout', (e) => { if (e.target.closest('.cell')) tip.hidden = true; });
+    root.addEventListener('mouseout', (e) => {
+      if (!e.target.closest('.cell')) return;
+      tip.hidden = true;
+      markTwins('twin', -1, -1);
+    });
     const open = (e) => {
       const g = e.target.closest('.cell');
       if (g) openCell(+g.dataset.map, +g.dataset.point);
@@ -226,8 +301,9 @@
     root.appendChild(el('p', { class: 'legend' },
       'Grey: share of the cell\'s runs judged chaotic (white none, black all); red border: ' +
       'stick-slip in at least half of its runs; dashed border: evaluated, no chaos; blue dot: ' +
-      'inferred by the adaptive map from its cell. Hover a cell for its runs\' verdicts; ' +
-      'click it (or Enter) for its runs.'));
+      'inferred by the adaptive map from its cell. Hover a cell for its runs\' verdicts (the ' +
+      'same cell is marked on the other maps); click it (or Enter) for its runs, their ' +
+      'records, spectra and autocorrelations, and the cell on every map.'));
     const panel = el('div', { id: 'panel', hidden: '' });
     root.appendChild(panel);
     bindCells(maps, tip);
