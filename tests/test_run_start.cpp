@@ -24,11 +24,16 @@ Scenario one_body(const std::string& S2_mm2, const std::string& start) {
                              "run.duration_s=8", "run.start=" + start});
 }
 
+// The share of the record from `from_s` at rest: the default seal has no true stiction (its
+// presliding elements creep), so rest is |v| within 1 % of the record's largest speed, the
+// analysis' own rest band for a clean record.
 double share_at_rest(const SimulationResult& r, double from_s) {
   const auto& v = r.series.channel("v").values;
   const auto first = static_cast<std::size_t>(from_s * r.series.rate_Hz());
+  double top = 0.0;
+  for (std::size_t i = first; i < v.size(); ++i) top = std::max(top, std::abs(v[i]));
   std::size_t rest = 0;
-  for (std::size_t i = first; i < v.size(); ++i) rest += v[i] == 0.0;
+  for (std::size_t i = first; i < v.size(); ++i) rest += std::abs(v[i]) <= 0.01 * top;
   return static_cast<double>(rest) / static_cast<double>(v.size() - first);
 }
 
@@ -61,7 +66,7 @@ TEST(RunStart, BothSidesOfTheBandWhereSlidingAndStickSlipCoexist) {
   const SimulationResult from_rest = run_from_start(one_body("0.75", "rest"));
   const SimulationResult sliding = run_from_start(one_body("0.75", "sliding"));
   ASSERT_TRUE(from_rest.summary.ok() && sliding.summary.ok());
-  EXPECT_GT(share_at_rest(from_rest, 2.0), 0.02);
+  EXPECT_GT(share_at_rest(from_rest, 2.0), 0.05);  // 12 % measured
   EXPECT_EQ(share_at_rest(sliding, 2.0), 0.0);
 }
 
