@@ -59,8 +59,7 @@ TEST(SweepPaperJudge, AFingerprintChangesOnlyWithTheJudge) {
   EXPECT_NE(judged_spec(true).fingerprint(), wolf.fingerprint());
 }
 
-RunRecord verdicts(std::size_t point, std::size_t repeat, bool chaotic,
-                   std::optional<bool> paper) {
+RunRecord verdicts(std::size_t point, std::size_t repeat, bool chaotic, std::optional<bool> paper) {
   RunRecord r;
   r.point = point;
   r.repeat = repeat;

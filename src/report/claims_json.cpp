@@ -11,17 +11,11 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Json count_json(const ClaimCount& n) {
-  return {{"agrees", n.agrees},
-          {"disagrees", n.disagrees},
-          {"not_reproduced", n.not_reproduced},
-          {"scored", n.scored()},
-          {"identity", n.identity},
-          {"contradictory", n.contradictory}};
+  return {{"agrees", n.agrees},   {"disagrees", n.disagrees}, {"not_reproduced", n.not_reproduced},
+          {"scored", n.scored()}, {"identity", n.identity},   {"contradictory", n.contradictory}};
 }
 
-Json margin_json(double margin) {
-  return std::isfinite(margin) ? Json(margin) : Json(nullptr);
-}
+Json margin_json(double margin) { return std::isfinite(margin) ? Json(margin) : Json(nullptr); }
 
 Json table_json(const std::vector<Claim>& claims) {
   const ClaimCount n = count_claims(claims);
@@ -49,7 +43,9 @@ Json table_json(const std::vector<Claim>& claims) {
 
 }  // namespace
 
-std::string claims_json(const std::vector<Claim>& claims) { return table_json(claims).dump(2) + "\n"; }
+std::string claims_json(const std::vector<Claim>& claims) {
+  return table_json(claims).dump(2) + "\n";
+}
 
 std::string claims_json(const std::vector<Claim>& claims, const std::vector<Claim>& paper) {
   Json j = table_json(claims);

@@ -12,10 +12,14 @@ namespace pneumachaos {
 namespace {
 
 // Every rule that counts chaotic runs or points, or reads the example's verdict.
-constexpr std::array<std::string_view, 8> kChaosClaims = {
-    "fig4_border",          "fig4_s1_above_s2",        "figs4to6_small_areas",
-    "fig5_chaos_reduced",   "fig5_full_chaos_halved",  "fig6_few_always_chaotic",
-    "fig6_triple_no_chaos", "fig7_verdict"};
+constexpr std::array<std::string_view, 8> kChaosClaims = {"fig4_border",
+                                                          "fig4_s1_above_s2",
+                                                          "figs4to6_small_areas",
+                                                          "fig5_chaos_reduced",
+                                                          "fig5_full_chaos_halved",
+                                                          "fig6_few_always_chaotic",
+                                                          "fig6_triple_no_chaos",
+                                                          "fig7_verdict"};
 
 void judge_map(std::optional<SweepSummary>& map) {
   if (map) map = under_paper_judge(*map);
@@ -39,9 +43,10 @@ ClaimInputs under_paper_judge(const ClaimInputs& in) {
 }
 
 std::string both_judges_headline(const ClaimCount& strict, const ClaimCount& paper) {
-  return fmt::format("{} of {} claims agree by the strict verdict; {} of {} by the paper's "
-                     "criterion",
-                     strict.agrees, strict.scored(), paper.agrees, paper.scored());
+  return fmt::format(
+      "{} of {} claims agree by the strict verdict; {} of {} by the paper's "
+      "criterion",
+      strict.agrees, strict.scored(), paper.agrees, paper.scored());
 }
 
 }  // namespace pneumachaos

@@ -99,10 +99,11 @@ std::string paper_judge_table(const std::vector<Claim>& paper) {
     if (!reads_chaos_judge(c.id)) continue;
     const std::string margin =
         c.margin == c.margin ? fmt::format(" ({:+.2f})", c.margin) : std::string();
-    h += fmt::format("<tr class=\"{}\"><td><a href=\"#claim-{}\">{}</a></td><td>{}</td><td><b>{}</b>{}"
-                     "</td><td>{}</td></tr>\n",
-                     verdict_class(c), escape(c.id), escape(c.id), escape(c.ours),
-                     escape(c.verdict), margin, escape(c.why));
+    h += fmt::format(
+        "<tr class=\"{}\"><td><a href=\"#claim-{}\">{}</a></td><td>{}</td><td><b>{}</b>{}"
+        "</td><td>{}</td></tr>\n",
+        verdict_class(c), escape(c.id), escape(c.id), escape(c.ours), escape(c.verdict), margin,
+        escape(c.why));
   }
   return h + "</table>\n";
 }
@@ -127,12 +128,12 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
   const std::string headline = claims_headline(count_claims(claims));
   // Under both judges the title says both counts; the paragraph keeps the strict breakdown.
   const std::string title =
-      paper_claims.empty()
-          ? headline.substr(0, headline.find(" ("))
-          : both_judges_headline(count_claims(claims), count_claims(paper_claims));
+      paper_claims.empty() ? headline.substr(0, headline.find(" ("))
+                           : both_judges_headline(count_claims(claims), count_claims(paper_claims));
   std::string h =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-      "<title>pneumachaos: Kosaki &amp; Sano, " + escape(title) +
+      "<title>pneumachaos: Kosaki &amp; Sano, " +
+      escape(title) +
       "</title>\n<style>\n"
       "body{font-family:sans-serif;max-width:1250px;margin:2em auto;padding:0 1em;color:#222}\n"
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:.35em .6em;"
@@ -144,8 +145,9 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "the claims tested &mdash; " +
       escape(title) + "</h1>\n<p><b>" + escape(headline) + ".</b> " +
       (paper_claims.empty() ? std::string()
-                            : "<b>" + escape(title) + "</b> (<a href=\"#paper-judge\">the chaos "
-                                                      "claims under the paper's judge</a>). ") +
+                            : "<b>" + escape(title) +
+                                  "</b> (<a href=\"#paper-judge\">the chaos "
+                                  "claims under the paper's judge</a>). ") +
       "Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
       (rig_source.empty() ? std::string("its built-in virtual rig") : escape(rig_source)) +
       "; each claim quotes the paper, says how we read it and is judged by a "
