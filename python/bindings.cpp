@@ -260,7 +260,8 @@ std::string stability_map_csv(const Scenario& scenario, const std::vector<std::s
 // What a sweep runs, from sweep()'s arguments: the same spec for the whole sweep and for
 // one run of it replayed.
 SweepSpec sweep_spec_py(const Scenario& scenario, const std::vector<std::string>& grid,
-                        std::size_t repeats, std::uint64_t seed, bool wolf, std::size_t surrogates,
+                        std::size_t repeats, std::uint64_t seed, bool wolf, bool paper_judge,
+                        std::size_t surrogates,
                         const ModelExponentSpec& model_exponent, bool adaptive,
                         bool adaptive_motion, std::size_t adaptive_step) {
   SweepSpec spec;
@@ -270,6 +271,7 @@ SweepSpec sweep_spec_py(const Scenario& scenario, const std::vector<std::string>
   spec.repeats = repeats;
   spec.seed = seed;
   spec.wolf = wolf;
+  spec.paper_judge = paper_judge;
   spec.surrogates = surrogates;
   spec.model_exponent = model_exponent;
   spec.adaptive.enabled = adaptive;
@@ -299,6 +301,10 @@ py::dict sweep_py(const SweepSpec& spec, const std::string& out, std::size_t thr
   d["chaos_full_points"] = s.chaos_full_points;
   d["chaos_any_points"] = s.chaos_any_points;
   if (spec.adaptive.enabled) d["inferred_points"] = s.inferred_points;
+  if (spec.paper_judge) {
+    d["paper_chaos_full_points"] = s.paper_chaos_full_points;
+    d["paper_chaos_any_points"] = s.paper_chaos_any_points;
+  }
   if (spec.model_exponent.enabled) {
     d["model_chaos_full_points"] = s.model_chaos_full_points;
     d["model_chaos_any_points"] = s.model_chaos_any_points;

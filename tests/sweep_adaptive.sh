@@ -26,8 +26,9 @@ grep -q "different sweep" "$work/err"
 if grep -vxF -f "$work/full/runs.csv" "$work/adaptive/runs.csv"; then
   echo "the adaptive runs above differ from the full sweep's"; exit 1
 fi
-# The first inferred point (last column of points.csv), replayed.
-point=$(awk -F, 'NR > 1 && $NF == 1 { print $1; exit }' "$work/adaptive/points.csv")
+# The first inferred point (points.csv's column `inferred`), replayed.
+point=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "inferred") c = i }
+                 NR > 1 && $c == 1 { print $1; exit }' "$work/adaptive/points.csv")
 [ -n "$point" ] || { echo "no inferred point"; exit 1; }
 "$cli" "${args[@]}" "${adaptive[@]}" --replay "$point:1" -o "$work/run.csv" 2>"$work/line"
 expected=$(awk -F, -v p="$point" 'NR > 1 && $3 == p && $4 == 1' "$work/full/runs.csv" | cut -d, -f3-)

@@ -66,10 +66,13 @@ TEST(AdaptiveSweep, EvaluatedRunsAreTheFullSweepsRecordsAndTheRestIsInferred) {
   const auto adaptive_points = lines_of(adaptive_dir + "/points.csv");
   ASSERT_EQ(full_points.size(), adaptive_points.size());
   EXPECT_EQ(full_points[0], adaptive_points[0]);
-  EXPECT_EQ(full_points[0].substr(full_points[0].rfind(',')), ",inferred");
+  // `inferred`, then the paper's judge's incidence (NaN: this sweep ran the verdict only).
+  EXPECT_EQ(full_points[0].substr(full_points[0].rfind(",inferred")),
+            ",inferred,paper_chaos_incidence");
   for (std::size_t p = 0; p < 42; ++p) {
     const bool inferred = adaptive.per_point[p].inferred;
-    EXPECT_EQ(adaptive_points[p + 1].back(), inferred ? '1' : '0');
+    EXPECT_EQ(adaptive_points[p + 1].substr(adaptive_points[p + 1].rfind(',') - 2),
+              inferred ? ",1,nan" : ",0,nan");
     if (!inferred) EXPECT_EQ(adaptive_points[p + 1], full_points[p + 1]);
     if (inferred) EXPECT_EQ(adaptive.per_point[p].runs, 0u);
     // The lattice the report counts motion on: the same in both, and never inferred.

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "claim_test_maps.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/report/claim_rules.hpp"
 #include "report/figures.hpp"
@@ -36,8 +37,8 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
   o.quick = true;
   o.progress = false;
   const ReproduceResult r = reproduce(o);
-  // Figs. 2, 3, 4, 5, 6 (and 4.5 kg), 7a-d and the stability map.
-  ASSERT_EQ(r.figures.size(), 11u);
+  // Figs. 2, 3, 4, 5, 6 (and 4.5 kg) under each judge, 7a-d and the stability map.
+  ASSERT_EQ(r.figures.size(), 15u);
   for (const FigureFiles& f : r.figures) {
     const std::string png = slurp(dir / "figures" / f.png);
     ASSERT_GT(png.size(), 1000u) << f.png;
@@ -59,7 +60,7 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
     EXPECT_TRUE(std::filesystem::exists(dir / (*it)[2].str())) << (*it)[2].str();
     ++links;
   }
-  EXPECT_GE(links, 11u * 4);  // image, SVG, script and data of each figure
+  EXPECT_GE(links, 15u * 4);  // image, SVG, script and data of each figure
   EXPECT_EQ(r.claims.size(), 22u);
   EXPECT_NE(html.find("<th>figure</th>"), std::string::npos);
   for (const Claim& c : r.claims) EXPECT_NE(html.find(c.verdict), std::string::npos);
@@ -79,32 +80,25 @@ TEST(Report, QuickReproduceWritesEveryFigureAndAPageWhoseLinksResolve) {
   ASSERT_EQ(j["claims"].size(), r.claims.size());
   for (std::size_t i = 0; i < r.claims.size(); ++i)
     EXPECT_EQ(j["claims"][i]["verdict"], r.claims[i].verdict);
+  // Both judges: the headline gives both counts, claims.json the paper's outcome of each chaos
+  // row, each map a second figure.
+  ASSERT_EQ(r.paper_claims.size(), r.claims.size());
+  const std::string both =
+      both_judges_headline(count_claims(r.claims), count_claims(r.paper_claims));
+  EXPECT_LT(html.find(both), html.find("<table>"));
+  EXPECT_EQ(j["paper_judge"]["headline"], both);
+  EXPECT_EQ(j["paper_judge"]["claims"].size(), 8u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "figures" / "fig4_map_ps025_m15_paper_judge.png"));
   std::filesystem::remove_all(dir);
 }
 
 SweepSummary map_with(std::size_t stick_slip, std::size_t full, std::size_t chaotic_runs) {
-  SweepSummary s;
+  // Every run judged (stick-slip), the chaotic runs spread over points of five runs each.
+  SweepSummary s =
+      spread_map(chaotic_runs, {0, 0, 0, 1, 0, 0, 0}, &PointSummary::chaos_incidence);
   s.stick_slip_points = stick_slip;
   s.chaos_full_points = full;
-  s.points = 780;
-  s.runs = 3900;
-  // The chaotic runs spread over points of five runs each.
-  for (std::size_t i = 0; i < 780; ++i) {
-    PointSummary p;
-    p.point = i;
-    p.runs = 5;
-    p.regime_incidence = {0, 0, 0, 1, 0, 0, 0};  // every run judged (stick-slip)
-    const std::size_t here = std::min<std::size_t>(5, chaotic_runs > 5 * i ? chaotic_runs - 5 * i : 0);
-    p.chaos_incidence = static_cast<double>(here) / 5.0;
-    s.per_point.push_back(p);
-  }
   return s;
-}
-
-const Claim& row(const std::vector<Claim>& claims, const std::string& id) {
-  for (const Claim& c : claims)
-    if (c.id == id) return c;
-  throw std::runtime_error("no row " + id);
 }
 
 TEST(Claims, FollowTheSweepResults) {

@@ -293,6 +293,27 @@ TEST(Sweep, AJournalOfTheOlderRecordFormatIsRefusedAsAnotherVersion) {
   std::filesystem::remove_all(dir);
 }
 
+// A journal exactly as the version before the paper's judge wrote it (25 fields a record) is
+// refused on resume, naming the file, rather than mixed with records of the new format.
+TEST(Sweep, AJournalWrittenBeforeThePaperJudgeIsRefusedNamingTheFile) {
+  const SweepSpec spec = small_spec();
+  const std::string dir = finished_sweep(spec, "beforejudge");
+  std::istringstream lines(slurp(dir + "/journal.csv"));
+  std::string line, old;
+  std::getline(lines, line);
+  old = line.substr(0, line.rfind(", ")) + ", 25 fields\n";
+  while (std::getline(lines, line)) old += line.substr(0, line.rfind(',')) + "\n";
+  std::ofstream(dir + "/journal.csv", std::ios::binary) << old;
+  const std::string message = resume_error(spec, dir);
+  EXPECT_NE(message.find(dir + "/journal.csv: the journal was written by another version"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("records of 25 fields; this version writes 26 fields"),
+            std::string::npos)
+      << message;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Sweep, ARecordWithTheModelExponentRoundTrips) {
   RunRecord r;
   r.point = 3;
@@ -317,8 +338,8 @@ TEST(Sweep, TheRecordsCsvFormIsUnchanged) {
             "point,repeat,seed,ok,termination,t_final_s,steps,sticks,mean_v_m_per_s,std_v_m_per_s,"
             "lambda_per_s,lambda_uncertainty_per_s,wolf_per_s,broadband_share,late_acf,regime,"
             "chaotic,stick_slip,zero_one_K,prediction_ratio,repeat_share,lambda_model_per_s,"
-            "lambda_model_uncertainty_per_s,lambda_model_span_s,reason");
-  EXPECT_EQ(RunRecord::kFields, 25u);
+            "lambda_model_uncertainty_per_s,lambda_model_span_s,reason,paper_chaotic");
+  EXPECT_EQ(RunRecord::kFields, 26u);
   RunRecord r;
   r.point = 7;
   r.repeat = 2;
@@ -338,8 +359,16 @@ TEST(Sweep, TheRecordsCsvFormIsUnchanged) {
   const std::string line = r.encode();
   EXPECT_EQ(line,
             "7,2,18446744073709551615,0,stop; ;hit;,7.5,1234,5,0.1,nan,-0,nan,nan,nan,nan,"
-            "stick-slip,1,1,1e-300,nan,nan,nan,nan,nan,a;b;c");
+            "stick-slip,1,1,1e-300,nan,nan,nan,nan,nan,a;b;c,");
   EXPECT_EQ(RunRecord::decode(line).encode(), line);
+  // The paper's judgement: empty when not judged, else 1 / 0, and back.
+  EXPECT_FALSE(RunRecord::decode(line).paper_chaotic.has_value());
+  for (const bool chaotic : {true, false}) {
+    r.paper_chaotic = chaotic;
+    const std::string judged = r.encode();
+    EXPECT_EQ(judged.substr(judged.size() - 2), chaotic ? ",1" : ",0");
+    EXPECT_EQ(RunRecord::decode(judged).paper_chaotic, std::optional<bool>(chaotic));
+  }
   EXPECT_THROW(RunRecord::decode("1,2,3"), Error);
   EXPECT_THROW(RunRecord::decode(std::string(line).replace(0, 1, "x")), Error);
 }

@@ -47,8 +47,10 @@ Action add_reproduce(CLI::App& app) {
         "again to continue the report from them\n",
         (std::filesystem::path(o->out_dir) / "sweeps").string()));
     const ReproduceResult r = reproduce(*o);
-    fmt::print("reproduce: {} figures; {}; report: {}\n", r.figures.size(),
-               claims_headline(count_claims(r.claims)), r.index_html);
+    fmt::print("reproduce: {} figures; {}; {}; report: {}\n", r.figures.size(),
+               claims_headline(count_claims(r.claims)),
+               both_judges_headline(count_claims(r.claims), count_claims(r.paper_claims)),
+               r.index_html);
     return kExitOk;
   };
 }

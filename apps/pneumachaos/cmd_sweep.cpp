@@ -51,6 +51,7 @@ struct SweepArgs {
   std::string out;
   bool resume = false;
   bool wolf = false;
+  std::string judge = "strict";
   std::optional<std::string> surrogates;
   ModelExponentSpec model;
   AdaptiveSpec adaptive;
@@ -88,6 +89,12 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
       ->check(output_directory_check());
   cmd->add_flag("--resume", a.resume, "finish an interrupted sweep in --out");
   cmd->add_flag("--wolf", a.wolf, "also run Wolf's estimator on every record (slower)");
+  cmd->add_option("--judge", a.judge,
+                  "strict (default): the regime verdict alone; paper: every run also judged by "
+                  "the paper's three indices (spectrum without a dominant line, autocorrelation "
+                  "converging to zero, Wolf's exponent positive; implies --wolf): runs.csv "
+                  "paper_chaotic, points.csv paper_chaos_incidence")
+      ->check(CLI::IsMember({"strict", "paper"}));
   cmd->add_option("--surrogates", a.surrogates,
                   "IAAFT surrogates per record for the verdict's test against linear noise, as "
                   "in `analyze`: 0 (default, off) or 19 to 999; 39 add about 1.2 s of CPU per 10 s "
@@ -126,6 +133,7 @@ SweepSpec sweep_spec_from(const SweepArgs& a) {
   spec.repeats = a.repeats.value_or(file.repeats.value_or(5));
   spec.seed = a.seed.value_or(file.seed.value_or(1));
   spec.wolf = a.wolf;
+  spec.paper_judge = a.judge == "paper";
   spec.surrogates = surrogate_count_option(a.surrogates, 0);
   spec.model_exponent = a.model;
   spec.adaptive = a.adaptive;
@@ -141,6 +149,10 @@ void print_sweep_summary(const SweepSpec& spec, const SweepSummary& s, const std
   if (spec.adaptive.enabled) {
     fmt::print("adaptive: {} of {} points evaluated, {} inferred; {} of the full grid's {} runs\n",
                s.points - s.inferred_points, s.points, s.inferred_points, s.runs, spec.runs());
+  }
+  if (spec.paper_judge) {
+    fmt::print("the paper's judge: 100 %-chaos region {} points, chaos anywhere {} points\n",
+               s.paper_chaos_full_points, s.paper_chaos_any_points);
   }
   if (spec.model_exponent.enabled) {
     fmt::print(

@@ -396,7 +396,7 @@ def _progress(progress, command):
 def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume=False,
           progress=True, wolf=False, surrogates=0, model_exponent=False, model_transient_s=None,
           model_measure_s=None, model_renormalize_s=None, adaptive=False, adaptive_motion=False,
-          adaptive_step=4, replay=None):
+          adaptive_step=4, replay=None, judge="strict"):
     """Repeated runs over a grid into directory `out` (journaled, resumable); returns the
     summary counts. The per-run and per-point tables are out/runs.csv and out/points.csv.
     progress: True prints "sweep: done/total runs" at most once a second, False prints
@@ -410,12 +410,17 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     points.csv's `inferred` column marks the points filled from their cell, not run;
     adaptive_motion=True (--adaptive-motion) also refines where the motion changes between
     settling and oscillating (about twice the runs).
+    judge="paper" (--judge paper) also judges every run by the paper's three indices (Wolf's
+    estimator runs on each): runs.csv paper_chaotic, points.csv paper_chaos_incidence, and the
+    summary gains paper_chaos_full_points and paper_chaos_any_points.
     replay=(POINT, REPEAT) is --replay: that one run of this sweep again, bit for bit, nothing
     written (out not needed); returns {"run": its runs.csv fields as text by column, "record":
     the SimulationResult the analysis judged, with v_measured, P1_measured, P2_measured}."""
-    spec = _sweep_spec(scenario, grid, repeats, seed, wolf, surrogates, model_exponent,
-                       (model_transient_s, model_measure_s, model_renormalize_s), adaptive,
-                       adaptive_motion, adaptive_step)
+    if judge not in ("strict", "paper"):
+        raise ValueError(f"sweep: judge: expected 'strict' or 'paper', got {judge!r}")
+    spec = _sweep_spec(scenario, grid, repeats, seed, (wolf, judge == "paper"), surrogates,
+                       model_exponent, (model_transient_s, model_measure_s, model_renormalize_s),
+                       adaptive, adaptive_motion, adaptive_step)
     if replay is not None:
         return _replay(spec, replay)
     if not out:
@@ -426,9 +431,9 @@ def sweep(scenario=None, grid=(), repeats=5, seed=1, out=None, threads=0, resume
     return _core.sweep(spec, str(out), int(threads), bool(resume), progress)
 
 
-def _sweep_spec(scenario, grid, repeats, seed, wolf, surrogates, model_exponent, model_times,
+def _sweep_spec(scenario, grid, repeats, seed, judges, surrogates, model_exponent, model_times,
                 adaptive, adaptive_motion, adaptive_step):
-    """What sweep() runs, checked naming each argument."""
+    """What sweep() runs, checked naming each argument; judges: (wolf, the paper's judge)."""
     for name, value in (("repeats", repeats), ("seed", seed), ("surrogates", surrogates),
                         ("adaptive_step", adaptive_step)):
         _whole(f"sweep: {name}", value, 0)
@@ -443,7 +448,8 @@ def _sweep_spec(scenario, grid, repeats, seed, wolf, surrogates, model_exponent,
     if _flag("sweep: adaptive_motion", adaptive_motion) and not adaptive:
         raise ValueError("sweep: adaptive_motion: needs adaptive=True")
     return _core.sweep_spec(_scenario(scenario)._core, _names(grid, "grid"), int(repeats),
-                            int(seed), bool(wolf), int(surrogates), model, bool(adaptive),
+                            int(seed), bool(judges[0]), bool(judges[1]), int(surrogates), model,
+                            bool(adaptive),
                             bool(adaptive_motion), int(adaptive_step))
 
 

@@ -95,6 +95,7 @@ OPTIONS = {
         "--out": kw("sweep", "out", None),
         "--resume": kw("sweep", "resume", False),
         "--wolf": kw("sweep", "wolf", False),
+        "--judge": kw("sweep", "judge", "strict"),
         "--surrogates": kw("sweep", "surrogates", 0),
         "--model-exponent": kw("sweep", "model_exponent", False),
         "--model-transient": kw("sweep", "model_transient_s", None),

@@ -198,9 +198,26 @@ def test_friction_and_fit_on_a_simulated_record():
         pc.fit(t, v, p1, p2, start, free=["circuit.S3_mm2"])
 
 
+def test_sweep_judges_each_run_by_the_paper_too(tmp_path):
+    """sweep(judge="paper"): runs.csv carries both judgements, the summary the paper's counts;
+    another judge is refused naming the argument."""
+    import csv
+    s = pc.Scenario.default().set("run.duration_s", 5.0)
+    summary = pc.sweep(s, grid=["circuit.S2_mm2=0.35:0.50:0.15"], repeats=1,
+                       out=str(tmp_path / "p"), progress=False, judge="paper")
+    with open(tmp_path / "p" / "runs.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0])[-1] == "paper_chaotic"
+    assert all(r["paper_chaotic"] in ("0", "1", "") for r in rows)
+    assert any(r["paper_chaotic"] != "" for r in rows)
+    assert "paper_chaos_any_points" in summary
+    with pytest.raises(ValueError, match="sweep: judge: expected 'strict' or 'paper'"):
+        pc.sweep(s, out=str(tmp_path / "q"), judge="lenient")
+
+
 def test_adaptive_sweep_marks_inferred_points(tmp_path):
     """sweep(adaptive=True): the summary counts the inferred points, points.csv marks them in
-    its last column; one axis is refused naming the option."""
+    its column `inferred`; one axis is refused naming the option."""
     import csv
     s = pc.Scenario.default().set("run.duration_s", 2.0)
     grid = ["circuit.S1_mm2=2.45:3.45:0.25", "circuit.S2_mm2=0.05:0.65:0.15"]
@@ -208,7 +225,7 @@ def test_adaptive_sweep_marks_inferred_points(tmp_path):
                        progress=False, adaptive=True, adaptive_step=2)
     with open(tmp_path / "a" / "points.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    assert len(rows) == 25 and list(rows[0])[-1] == "inferred"
+    assert len(rows) == 25 and list(rows[0])[-2:] == ["inferred", "paper_chaos_incidence"]
     assert summary["inferred_points"] == sum(r["inferred"] == "1" for r in rows)
     assert all(r["runs"] == "0" for r in rows if r["inferred"] == "1")
     with pytest.raises(ValueError, match="adaptive: refines a map over exactly two grid axes"):

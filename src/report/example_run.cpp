@@ -65,6 +65,7 @@ void add_example_inputs(ClaimInputs& ci, const ExampleRun& run) {
   }
   if (a.wolf_run) ci.example_wolf = a.wolf.lambda_per_s;
   ci.example_chaotic = a.verdict.chaotic;
+  if (const PaperJudgement j = paper_judge(a); j.evaluated) ci.example_paper_chaotic = j.chaotic;
   ci.example_regime = regime_name(a.verdict.regime);
   ci.example_peak_share = a.spectrum.peak_share;
   ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);

@@ -61,14 +61,17 @@ const char* kExplore =
     "explorer needs JavaScript; the figures and <code>sweeps/*/runs.csv</code> hold the same "
     "data.</noscript></div>\n";
 
+// The row's colour on the page.
+std::string verdict_class(const Claim& c) {
+  return c.verdict == kAgrees ? "agrees" : c.verdict == kDisagrees ? "disagrees" : "not";
+}
+
 std::string claims_table(const std::vector<Claim>& claims) {
   std::string h =
       "<table><tr><th>the paper says</th><th>our reading</th><th>rule</th><th>ours</th>"
       "<th>verdict (margin)</th><th>why</th><th>figure</th></tr>\n";
   for (const Claim& c : claims) {
-    const std::string cls = c.verdict == kAgrees      ? "agrees"
-                            : c.verdict == kDisagrees ? "disagrees"
-                                                      : "not";
+    const std::string cls = verdict_class(c);
     const std::string margin =
         c.margin == c.margin ? fmt::format(" ({:+.2f})", c.margin) : std::string();
     h += fmt::format(
@@ -78,6 +81,29 @@ std::string claims_table(const std::vector<Claim>& claims) {
         escape(c.ours), escape(c.verdict), margin, escape(c.why),
         c.figure.empty() ? std::string("&ndash;")
                          : fmt::format("<a href=\"#{0}\">{0}</a>", escape(c.figure)));
+  }
+  return h + "</table>\n";
+}
+
+// The chaos rows again as the paper's judge decides them (the same rules and runs).
+std::string paper_judge_table(const std::vector<Claim>& paper) {
+  if (paper.empty()) return "";
+  std::string h =
+      "<h3 id=\"paper-judge\">The chaos claims under the paper's judge</h3>\n<p>The same "
+      "rules read the same runs, with the paper's three indices (a spectrum without a dominant "
+      "line, an autocorrelation converging to zero, Wolf's exponent positive) deciding which "
+      "runs are chaotic instead of the regime verdict. The rows that do not read chaos are the "
+      "same under both; every map has a second figure under this judge.</p>\n"
+      "<table><tr><th>claim</th><th>ours</th><th>verdict (margin)</th><th>why</th></tr>\n";
+  for (const Claim& c : paper) {
+    if (!reads_chaos_judge(c.id)) continue;
+    const std::string margin =
+        c.margin == c.margin ? fmt::format(" ({:+.2f})", c.margin) : std::string();
+    h += fmt::format(
+        "<tr class=\"{}\"><td><a href=\"#claim-{}\">{}</a></td><td>{}</td><td><b>{}</b>{}"
+        "</td><td>{}</td></tr>\n",
+        verdict_class(c), escape(c.id), escape(c.id), escape(c.ours), escape(c.verdict), margin,
+        escape(c.why));
   }
   return h + "</table>\n";
 }
@@ -98,12 +124,16 @@ std::string users_rig(const std::string& source) {
 
 std::string report_html(const std::vector<FigureFiles>& figures, const std::vector<Claim>& claims,
                         const std::string& scenario_toml, const std::string& settings,
-                        const std::string& rig_source) {
+                        const std::string& rig_source, const std::vector<Claim>& paper_claims) {
   const std::string headline = claims_headline(count_claims(claims));
+  // Under both judges the title says both counts; the paragraph keeps the strict breakdown.
+  const std::string title =
+      paper_claims.empty() ? headline.substr(0, headline.find(" ("))
+                           : both_judges_headline(count_claims(claims), count_claims(paper_claims));
   std::string h =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
       "<title>pneumachaos: Kosaki &amp; Sano, " +
-      escape(headline.substr(0, headline.find(" ("))) +
+      escape(title) +
       "</title>\n<style>\n"
       "body{font-family:sans-serif;max-width:1250px;margin:2em auto;padding:0 1em;color:#222}\n"
       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:.35em .6em;"
@@ -113,8 +143,12 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "<link rel=\"stylesheet\" href=\"report.css\"></head><body>\n"
       "<h1>An analytical and experimental study of chaotic oscillation in a pneumatic cylinder: "
       "the claims tested &mdash; " +
-      escape(headline.substr(0, headline.find(" ("))) + "</h1>\n<p><b>" + escape(headline) +
-      ".</b> Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
+      escape(title) + "</h1>\n<p><b>" + escape(headline) + ".</b> " +
+      (paper_claims.empty() ? std::string()
+                            : "<b>" + escape(title) +
+                                  "</b> (<a href=\"#paper-judge\">the chaos "
+                                  "claims under the paper's judge</a>). ") +
+      "Kosaki &amp; San&#333;'s figures and claims, computed by pneumachaos from " +
       (rig_source.empty() ? std::string("its built-in virtual rig") : escape(rig_source)) +
       "; each claim quotes the paper, says how we read it and is judged by a "
       "stated rule with a signed margin (&ge; 0 passes; <code>claims.json</code> holds the same "
@@ -126,7 +160,7 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "sentences later, an extension): that row shows both sentences and is not scored; the "
       "chaos, on which both sentences agree, is. A rule that no plausible model could fail is "
       "marked <em>identity</em> and not scored either.</p>\n" +
-      claims_table(claims) + kExplore;
+      claims_table(claims) + paper_judge_table(paper_claims) + kExplore;
   h += "<h2>Figures</h2>\n<p>Each figure's data, its gnuplot commands "
        "(<code>NAME_plot.gp</code>) and the driver that renders PNG and SVG "
        "(<code>gnuplot NAME.gp</code>) are in <code>figures/</code>.</p>\n";

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "pneumachaos/analysis/analyze.hpp"
+#include "pneumachaos/analysis/paper_judge.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
@@ -18,7 +19,7 @@
 namespace pneumachaos {
 namespace {
 
-void record_analysis(const AnalysisResult& a, RunRecord& r) {
+void record_analysis(const SweepSpec& spec, const AnalysisResult& a, RunRecord& r) {
   if (a.divergence.found_linear_region) {
     r.lambda = a.divergence.lambda_per_s;
     r.lambda_uncertainty = a.divergence.uncertainty_per_s;
@@ -32,6 +33,9 @@ void record_analysis(const AnalysisResult& a, RunRecord& r) {
   if (a.zero_one.run) r.zero_one_K = a.zero_one.K;
   if (a.prediction.computed) r.prediction_ratio = a.prediction.ratio();
   if (a.evidence.repetition.run) r.repeat_share = a.evidence.repetition.share;
+  if (!spec.paper_judge) return;
+  const PaperJudgement j = paper_judge(a);
+  if (j.evaluated) r.paper_chaotic = j.chaotic;
 }
 
 void add_reason(RunRecord& r, const std::string& why) {
@@ -93,10 +97,10 @@ RunRecord judge_run(const SweepSpec& spec, const SweepRun& run) {
   r.mean_v = mean_of(run.measured_v);
   r.std_v = standard_deviation(run.measured_v);
   AnalysisOptions options;
-  options.wolf = spec.wolf;
+  options.wolf = spec.runs_wolf();
   options.surrogates.count = spec.surrogates;
   try {
-    record_analysis(analyze_series(run.measured_v, run.sim.series.rate_Hz(), options), r);
+    record_analysis(spec, analyze_series(run.measured_v, run.sim.series.rate_Hz(), options), r);
   } catch (const Error& e) {
     r.reason = e.what();  // e.g. a record too short to judge: undetermined, not failed
   }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <charconv>
+#include <optional>
 #include <type_traits>
 
 #include "pneumachaos/core/error.hpp"
@@ -24,6 +25,8 @@ template <typename T>
 std::string put(const T& v) {
   if constexpr (std::is_same_v<T, bool>) {
     return v ? "1" : "0";
+  } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+    return v ? put(*v) : std::string();  // empty: not judged
   } else if constexpr (std::is_same_v<T, std::string>) {
     return clean(v);
   } else {
@@ -35,6 +38,8 @@ template <typename T>
 void get(const std::string& f, T& out) {
   if constexpr (std::is_same_v<T, bool>) {
     out = f == "1";
+  } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+    out = f.empty() ? std::nullopt : std::optional<bool>(f == "1");
   } else if constexpr (std::is_same_v<T, std::string>) {
     out = f;
   } else {
@@ -88,6 +93,8 @@ constexpr std::array kTable = {
     field<&RunRecord::lambda_model_uncertainty>("lambda_model_uncertainty_per_s"),
     field<&RunRecord::lambda_model_span_s>("lambda_model_span_s"),
     field<&RunRecord::reason>("reason"),
+    // Last, so that the columns before it keep their places for readers of older files.
+    field<&RunRecord::paper_chaotic>("paper_chaotic"),
 };
 
 }  // namespace

@@ -50,13 +50,36 @@ void summarize_model_exponent(const std::vector<const RunRecord*>& runs, PointSu
 // A point the map judges: one with a successful run, or one inferred from such a point.
 bool judged(const PointSummary& p) { return p.runs > p.failed || p.inferred; }
 
+// The chaos regions as the verdict draws them: points chaotic in every / in some run.
+void count_chaos(const std::vector<PointSummary>& points, std::size_t& full, std::size_t& any) {
+  full = any = 0;
+  for (const PointSummary& ps : points) {
+    if (chaos_class(ps) == ChaosClass::kAll) ++full;
+    if (chaos_class(ps) != ChaosClass::kNone) ++any;
+  }
+}
+
+// The paper's judge in the verdict's place at every point (NaN: the sweep did not run it).
+std::vector<PointSummary> paper_judged(std::vector<PointSummary> points) {
+  for (PointSummary& ps : points)
+    ps.chaos_incidence = std::isfinite(ps.paper_chaos_incidence) ? ps.paper_chaos_incidence : 0.0;
+  return points;
+}
+
+bool judged_by_paper(const SweepSummary& s) {
+  return std::any_of(s.per_point.begin(), s.per_point.end(),
+                     [](const PointSummary& p) { return std::isfinite(p.paper_chaos_incidence); });
+}
+
 void count_regions(const SweepSpec& spec, SweepSummary& s) {
-  s.stick_slip_points = s.chaos_full_points = s.chaos_any_points = 0;
+  s.stick_slip_points = 0;
   s.model_chaos_full_points = s.model_chaos_any_points = 0;
+  count_chaos(s.per_point, s.chaos_full_points, s.chaos_any_points);
+  s.paper_chaos_full_points = s.paper_chaos_any_points = 0;
+  if (spec.paper_judge)
+    count_chaos(paper_judged(s.per_point), s.paper_chaos_full_points, s.paper_chaos_any_points);
   for (const PointSummary& ps : s.per_point) {
     if (in_stick_slip_region(ps)) ++s.stick_slip_points;
-    if (chaos_class(ps) == ChaosClass::kAll) ++s.chaos_full_points;
-    if (chaos_class(ps) != ChaosClass::kNone) ++s.chaos_any_points;
     if (!spec.model_exponent.enabled) continue;
     if (ps.model_chaos_incidence >= 1.0) ++s.model_chaos_full_points;
     if (ps.model_chaos_incidence > 0.0) ++s.model_chaos_any_points;
@@ -96,6 +119,7 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
   s.runs = records.size();
   s.per_point.resize(s.points);
   std::vector<std::size_t> lambda_count(s.points, 0);
+  std::vector<double> paper_chaotic(s.points, 0.0);
   std::vector<std::vector<const RunRecord*>> by_point(s.points);
   for (const RunRecord& r : records) by_point.at(r.point).push_back(&r);
   const std::vector<char> lattice = lattice_of(spec);
@@ -120,6 +144,7 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
     }
     ps.stick_slip_incidence += r.stick_slip ? 1.0 : 0.0;
     ps.chaos_incidence += r.chaotic ? 1.0 : 0.0;
+    if (spec.paper_judge) paper_chaotic[r.point] += r.paper_chaotic.value_or(false) ? 1.0 : 0.0;
     const auto& names = sweep_regime_names();
     const auto at = std::find(names.begin(), names.end(), r.regime);
     if (at != names.end()) ps.regime_incidence[at - names.begin()] += 1.0;
@@ -134,6 +159,7 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
     if (ok > 0) {
       ps.stick_slip_incidence /= ok;
       ps.chaos_incidence /= ok;
+      if (spec.paper_judge) ps.paper_chaos_incidence = paper_chaotic[ps.point] / ok;
       for (double& f : ps.regime_incidence) f /= ok;
       ps.mean_v /= ok;
     } else {
@@ -156,6 +182,7 @@ SweepSummary summarize_adaptive(const SweepSpec& spec, const std::vector<RunReco
     const PointSummary& from = s.per_point.at(source[p]);
     ps.stick_slip_incidence = from.stick_slip_incidence;
     ps.chaos_incidence = from.chaos_incidence;
+    ps.paper_chaos_incidence = from.paper_chaos_incidence;
     ps.regime_incidence = from.regime_incidence;
     ps.model_chaos_incidence = from.model_chaos_incidence;
     ps.mean_v = ps.mean_lambda = kNaN;  // values, unlike classes, are not carried over
@@ -164,6 +191,16 @@ SweepSummary summarize_adaptive(const SweepSpec& spec, const std::vector<RunReco
   }
   count_regions(spec, s);
   return s;
+}
+
+SweepSummary under_paper_judge(const SweepSummary& s) {
+  if (!judged_by_paper(s))
+    throw Error("paper judge", "the sweep did not judge its runs by the paper's indices");
+  SweepSummary out = s;
+  out.per_point = paper_judged(s.per_point);
+  out.chaos_full_points = s.paper_chaos_full_points;
+  out.chaos_any_points = s.paper_chaos_any_points;
+  return out;
 }
 
 }  // namespace pneumachaos

@@ -29,7 +29,7 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                   "model_chaos_incidence";
     for (const auto& name : sweep_regime_names()) f.stream() << ",incidence_" << name;
     // Last, so that readers of the columns before it need no change.
-    f.stream() << ",inferred\n";
+    f.stream() << ",inferred,paper_chaos_incidence\n";
     for (const PointSummary& p : summary.per_point) {
       f.stream() << p.point << ',';
       for (double c : p.coordinates) f.stream() << fmt::format("{},", c);
@@ -38,7 +38,7 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                                 p.mean_lambda_model, p.lambda_model_uncertainty,
                                 p.model_chaos_incidence);
       for (double share : p.regime_incidence) f.stream() << fmt::format(",{}", share);
-      f.stream() << (p.inferred ? ",1\n" : ",0\n");
+      f.stream() << fmt::format(",{},{}\n", p.inferred ? 1 : 0, p.paper_chaos_incidence);
     }
     f.commit();
   }
@@ -47,6 +47,7 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
                {"repeats", spec.repeats},
                {"seed", spec.seed},
                {"wolf", spec.wolf},
+               {"judge", spec.paper_judge ? "strict and paper" : "strict"},
                {"surrogates", spec.surrogates},
                {"model_exponent", spec.model_exponent.enabled}};
   if (spec.model_exponent.enabled) {
@@ -75,6 +76,13 @@ void write_sweep_outputs(const SweepSpec& spec, const std::vector<RunRecord>& re
     j["regions"]["model_chaos_any_points"] = summary.model_chaos_any_points;
     j["regions"]["model_chaos_rule"] =
         "the model's exponent positive beyond 3 standard errors over the measured span";
+  }
+  if (spec.paper_judge) {
+    j["regions"]["paper_chaos_full_points"] = summary.paper_chaos_full_points;
+    j["regions"]["paper_chaos_any_points"] = summary.paper_chaos_any_points;
+    j["regions"]["paper_chaos_rule"] =
+        "the paper's three indices (spectrum without a dominant line, autocorrelation "
+        "converging to zero, Wolf's exponent positive) say chaotic";
   }
   AtomicFile f(dir + "/summary.json");
   f.stream() << j.dump(2) << '\n';

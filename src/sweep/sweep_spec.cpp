@@ -92,6 +92,8 @@ std::string SweepSpec::fingerprint() const {
     text += "\n";
   }
   text += fmt::format("repeats={} seed={} wolf={}\n", repeats, seed, wolf);
+  // Only when on, so that a sweep without it keeps its fingerprint.
+  if (paper_judge) text += "judge=paper\n";
   // Only when on, so that the journals of sweeps from before the option still resume.
   if (surrogates > 0) text += fmt::format("surrogates={}\n", surrogates);
   const ModelExponentSpec& m = model_exponent;

@@ -58,6 +58,9 @@ ClaimCount count_claims(const std::vector<Claim>& claims);
 std::string claims_headline(const ClaimCount& c);
 /// The table as JSON (claims.json): the count and every row with its fields.
 std::string claims_json(const std::vector<Claim>& claims);
+/// The same, followed by "paper_judge": the count and the rows that read the chaos judge
+/// (reads_chaos_judge) as `paper` evaluates them; the strict table before it is unchanged.
+std::string claims_json(const std::vector<Claim>& claims, const std::vector<Claim>& paper);
 
 /// Fig. 2 reduced: each circuit's step responses at the same openings, under the paper's own
 /// assumptions (meter-out with P1 = Ps, meter-in with the rod side at atmosphere).
@@ -84,6 +87,7 @@ struct ClaimInputs {
   std::optional<double> example_model_lambda;       ///< the model's own exponent [1/s]
   std::optional<double> example_model_uncertainty;  ///< its standard error [1/s]
   std::optional<bool> example_chaotic;        ///< the regime verdict says chaotic
+  std::optional<bool> example_paper_chaotic;  ///< the paper's three indices say chaotic
   std::string example_regime;                 ///< the verdict's regime name
   std::optional<double> example_peak_share;   ///< spectral peak (+-1 bin) / total power
   std::optional<double> example_acf_after_1s;  ///< largest |ACF| at lags >= 1 s
@@ -103,6 +107,17 @@ std::vector<Claim> map_claims(const ClaimInputs& in);
 std::vector<Claim> example_claims(const ClaimInputs& in);
 /// Every row, maps first.
 std::vector<Claim> evaluate_claims(const ClaimInputs& in);
+
+/// The claims whose rule reads which runs are chaotic (a map's chaos incidence or the Fig. 7
+/// example's verdict): the ones the paper's judge can decide otherwise than the verdict.
+bool reads_chaos_judge(const std::string& claim_id);
+/// The same inputs with the paper's judge in the verdict's place: each map under_paper_judge
+/// and the example's paper judgement as its verdict. The rules are not changed; only which
+/// runs count as chaotic. Throws Error when a map was swept without the paper's judge.
+ClaimInputs under_paper_judge(const ClaimInputs& in);
+/// "K of M claims agree by the strict verdict; N of M by the paper's criterion" (the strict
+/// count first, where the page's single count stood).
+std::string both_judges_headline(const ClaimCount& strict, const ClaimCount& paper);
 
 /// Fills a row's verdict, margin and why from its rule's result.
 void judge(Claim& c, const RuleResult& r);

@@ -41,6 +41,8 @@ struct ReproduceOptions {
 struct ReproduceResult {
   std::vector<FigureFiles> figures;
   std::vector<Claim> claims;
+  /// The same rows with the paper's judge deciding which runs are chaotic (under_paper_judge).
+  std::vector<Claim> paper_claims;
   std::string index_html;  ///< path of the report
 };
 
@@ -50,9 +52,11 @@ ReproduceResult reproduce(const ReproduceOptions& options);
 
 /// The HTML page for a set of figures and claims (relative links into figures/).
 /// `rig_source`: empty for the built-in virtual rig (the page explains it), else how the
-/// user's rig was given.
+/// user's rig was given. `paper_claims` (when given): the rows under the paper's judge, whose
+/// count joins the headline and whose chaos rows get a table of their own.
 std::string report_html(const std::vector<FigureFiles>& figures, const std::vector<Claim>& claims,
                         const std::string& scenario_toml, const std::string& settings,
-                        const std::string& rig_source = "");
+                        const std::string& rig_source = "",
+                        const std::vector<Claim>& paper_claims = {});
 
 }  // namespace pneumachaos

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,9 @@ struct SweepSpec {
   std::size_t repeats = 5;
   std::uint64_t seed = 1;
   bool wolf = false;  ///< also run Wolf's estimator per run (slower; the verdict does not use it)
+  /// Also judge every run by the paper's three indices (paper_judge.hpp) beside the verdict;
+  /// they read Wolf's exponent, so this runs Wolf's estimator whatever `wolf` says.
+  bool paper_judge = false;
   /// IAAFT surrogates per run for the verdict's determinism test (0 = off, as in the library:
   /// 39 cost about 1.2 s of CPU per 10 s rig run); seeded as `analyze`'s default, so
   /// `analyze --surrogates N` on a replayed record gives the run's verdict.
@@ -71,6 +75,8 @@ struct SweepSpec {
   [[nodiscard]] std::vector<std::string> warnings() const;
   [[nodiscard]] std::size_t points() const { return grid_size(axes); }
   [[nodiscard]] std::size_t runs() const { return points() * repeats; }
+  /// Whether each run gets Wolf's estimator: asked for, or read by the paper's judge.
+  [[nodiscard]] bool runs_wolf() const { return wolf || paper_judge; }
   /// Identifies the spec: a resume with another spec is refused.
   [[nodiscard]] std::string fingerprint() const;
 };
@@ -97,6 +103,9 @@ struct RunRecord {
   /// The model's own exponent and its standard error (NaN: not asked for, or not measurable;
   /// `reason` then says why) and the time it spans.
   double lambda_model = kNaN, lambda_model_uncertainty = kNaN, lambda_model_span_s = kNaN;
+  /// The paper's judge (SweepSpec::paper_judge): chaotic or not; none when not asked for or
+  /// when an index could not be computed (no ACF lag of 1 s, no Wolf exponent).
+  std::optional<bool> paper_chaotic;
 
   [[nodiscard]] std::size_t index(std::size_t repeats) const { return point * repeats + repeat; }
   /// Fields of an encoded record (one table in run_record.cpp gives the header, the writer and
@@ -156,6 +165,10 @@ struct PointSummary {
   /// successful runs whose exponent is positive beyond 3 of its standard errors.
   double mean_lambda_model = kNaN, lambda_model_uncertainty = kNaN;
   double model_chaos_incidence = kNaN;
+  /// The paper's judge: the fraction of the successful runs it calls chaotic (a run it could
+  /// not judge counts as not chaotic, as an undetermined verdict does); NaN when no run of the
+  /// sweep was judged by it.
+  double paper_chaos_incidence = kNaN;
   /// Adaptive maps: not evaluated (runs 0, NaN means) but filled from the evaluated point of
   /// its cell named by GridRefinement::sources(): its incidences, hence its classes.
   bool inferred = false;
@@ -187,6 +200,8 @@ struct SweepSummary {
   std::size_t chaos_any_points = 0;   ///< points chaotic in at least one run
   /// With the model's exponent: points where it is beyond 3 sigma in every / in some run.
   std::size_t model_chaos_full_points = 0, model_chaos_any_points = 0;
+  /// With the paper's judge: points it calls chaotic in every / in some run.
+  std::size_t paper_chaos_full_points = 0, paper_chaos_any_points = 0;
   /// Adaptive maps: points filled from their cell, not evaluated (runs counts only evaluated
   /// runs; the region counts above include the inferred points).
   std::size_t inferred_points = 0;
@@ -201,5 +216,11 @@ SweepSummary summarize(const SweepSpec& spec, const std::vector<RunRecord>& reco
 /// whose source[p] != p (GridRefinement::sources) filled from that point and marked inferred.
 SweepSummary summarize_adaptive(const SweepSpec& spec, const std::vector<RunRecord>& records,
                                 const std::vector<std::size_t>& source);
+
+/// The same map with the paper's judge in the verdict's place: every point's chaos incidence
+/// is its paper_chaos_incidence and the chaos regions are counted from it; stick-slip, the
+/// regimes and everything else stay as they are (the same runs, judged twice). Throws Error
+/// when the sweep did not run the paper's judge.
+SweepSummary under_paper_judge(const SweepSummary& s);
 
 }  // namespace pneumachaos
