@@ -36,6 +36,10 @@ TEST(ReportData, ReplayArgumentsNameTheGridRepeatsAndSeed) {
   EXPECT_EQ(replay_arguments(m),
             "--set run.duration_s=5 --grid circuit.S1_mm2=2.45:3.7:0.25 "
             "--grid circuit.S2_mm2=0.05:0.95:0.15 --repeats 2 --seed 7");
+  // The report's maps are judged by both judges: the replay judges its run the same way, so
+  // its runs.csv line has the same Wolf exponent and paper_chaotic.
+  m.spec.paper_judge = true;
+  EXPECT_NE(replay_arguments(m).find(" --judge paper "), std::string::npos);
 }
 
 // A map swept before the paper's judge has a runs.csv without its last column: the explorer

@@ -35,6 +35,10 @@ std::size_t default_segment(std::size_t n) {
 
 }  // namespace
 
+std::size_t welch_segment_length(std::size_t n_samples, const SpectrumOptions& options) {
+  return options.segment_length == 0 ? default_segment(n_samples) : options.segment_length;
+}
+
 void SpectrumOptions::validate(std::size_t n_samples) const {
   const std::size_t L = segment_length == 0 ? default_segment(n_samples) : segment_length;
   if (L < kShortestSegment) {

@@ -81,6 +81,9 @@ Claim spectrum(const ClaimInputs& in) {
           "no spectral peak (+-1 bin) holds more than 25 % of the power", "fig7b_indices"};
   if (!in.example_peak_share) return missing(c, "no record");
   c.ours = fmt::format("strongest peak: {:.0f} % of the power", 100 * *in.example_peak_share);
+  if (in.example_spectrum_resolution_Hz && in.example_settled_s)
+    c.ours += fmt::format(" (bins of {:.2g} Hz, Welch over the {:.1f} s settled record)",
+                          *in.example_spectrum_resolution_Hz, *in.example_settled_s);
   judge(c, spectrum_without_dominant_peak(*in.example_peak_share));
   return c;
 }

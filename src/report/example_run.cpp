@@ -68,6 +68,8 @@ void add_example_inputs(ClaimInputs& ci, const ExampleRun& run) {
   if (const PaperJudgement j = paper_judge(a); j.evaluated) ci.example_paper_chaotic = j.chaotic;
   ci.example_regime = regime_name(a.verdict.regime);
   ci.example_peak_share = a.spectrum.peak_share;
+  ci.example_spectrum_resolution_Hz = a.spectrum.resolution_Hz;
+  ci.example_settled_s = static_cast<double>(v.size()) / a.rate_Hz;
   ci.example_acf_after_1s = acf_envelope_after(a.acf.r, a.acf.rate_Hz, 1.0);
   // Low speed: up to a quarter of the example's largest speed.
   const double vmax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());

@@ -124,6 +124,9 @@ std::string runs_file(const MapData& m) { return "runs/" + m.figure + ".js"; }
 std::string replay_arguments(const MapData& m) {
   std::string s = m.scenario_args.empty() ? "" : m.scenario_args + " ";
   for (const GridAxis& a : m.spec.axes) s += "--grid " + grid_text(a) + " ";
+  // A run judged by both judges stores Wolf's exponent and the paper's judgement too.
+  if (m.spec.paper_judge) s += "--judge paper ";
+  else if (m.spec.wolf) s += "--wolf ";
   return s + fmt::format("--repeats {} --seed {}", m.spec.repeats, m.spec.seed);
 }
 

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "pneumachaos/report/reproduce.hpp"
+#include "report/explanations.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -160,7 +161,7 @@ std::string report_html(const std::vector<FigureFiles>& figures, const std::vect
       "sentences later, an extension): that row shows both sentences and is not scored; the "
       "chaos, on which both sentences agree, is. A rule that no plausible model could fail is "
       "marked <em>identity</em> and not scored either.</p>\n" +
-      claims_table(claims) + paper_judge_table(paper_claims) + kExplore;
+      claims_table(claims) + paper_judge_table(paper_claims) + explanations_html() + kExplore;
   h += "<h2>Figures</h2>\n<p>Each figure's data, its gnuplot commands "
        "(<code>NAME_plot.gp</code>) and the driver that renders PNG and SVG "
        "(<code>gnuplot NAME.gp</code>) are in <code>figures/</code>.</p>\n";

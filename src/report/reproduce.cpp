@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 
+#include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
@@ -367,7 +368,9 @@ class ReportBuilder {
         "records{}, {:g} % seal "
         "friction scatter and a {:g} % bore texture per run, each run judged twice: by the "
         "regime verdict and by the paper's three indices (Wolf's estimator on every run); m is "
-        "the total moving mass{}. "
+        "the total moving mass{}. A full-length run's spectrum has bins of {:.2g} Hz (the "
+        "paper's judge counts a line within one bin either side), a run ended by the stroke "
+        "coarser ones. "
         "Chaotic example (Figs. 3 and 7): Ps 0.25 MPa, m {:g} kg, no scatter or texture, {}.",
         o_.quick ? "quick" : "the paper's", spec_.axes[0].values.size(),
         spec_.axes[1].values.size(),
@@ -381,7 +384,13 @@ class ReportBuilder {
             ? fmt::format(" (piston and rod {:g} kg, the rest the load on its mount)",
                           base_.load.piston_mass_kg)
             : std::string(" (one rigid body)"),
-        base_.total_moving_mass_kg(), example_length());
+        map_run_resolution_Hz(), base_.total_moving_mass_kg(), example_length());
+  }
+  // The bin width of a map run's Welch spectrum, for a record of the runs' full length.
+  [[nodiscard]] double map_run_resolution_Hz() const {
+    const RunParams& r = spec_.base.run;
+    const auto samples = static_cast<std::size_t>(r.duration_s * r.sample_rate_Hz) + 1;
+    return r.sample_rate_Hz / static_cast<double>(welch_segment_length(samples));
   }
   [[nodiscard]] double record_s() const { return o_.quick ? 10.0 : 30.0; }
   // The example's record as it ran: a stroke end shortens it, and the page says so.

@@ -29,6 +29,10 @@ struct Spectrum {
   double broadband_share = 0.0;    ///< power outside the strongest bins / total
 };
 
+/// The segment length welch_spectrum takes for n_samples under `options`: its frequency
+/// resolution is the rate divided by it (what a spectral rule can tell apart).
+std::size_t welch_segment_length(std::size_t n_samples, const SpectrumOptions& options = {});
+
 /// Welch PSD of x sampled at rate_Hz. Throws Error if x is shorter than one segment of 64.
 Spectrum welch_spectrum(std::span<const double> x, double rate_Hz,
                         const SpectrumOptions& options = {});

@@ -90,6 +90,8 @@ struct ClaimInputs {
   std::optional<bool> example_paper_chaotic;  ///< the paper's three indices say chaotic
   std::string example_regime;                 ///< the verdict's regime name
   std::optional<double> example_peak_share;   ///< spectral peak (+-1 bin) / total power
+  std::optional<double> example_spectrum_resolution_Hz;  ///< that spectrum's bin width
+  std::optional<double> example_settled_s;  ///< the length of the record the example's rules read
   std::optional<double> example_acf_after_1s;  ///< largest |ACF| at lags >= 1 s
   std::optional<FoldStretch> fold_stretch;
   std::optional<FrictionLoop> friction_loop;

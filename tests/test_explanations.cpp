@@ -1,0 +1,31 @@
+// The report's section "What could explain the paper's chaos" (src/report/explanations.hpp).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "report/explanations.hpp"
+
+namespace pneumachaos {
+namespace {
+
+// Five explanations, each a row whose status (its last cell) is one of the three the section
+// promises: reproduces, ruled out (within stated bounds) or untested.
+TEST(Explanations, EveryRowEndsInOneOfTheThreeStatuses) {
+  const std::string h = explanations_html();
+  std::size_t rows = 0;
+  for (std::size_t at = h.find("<tr><td>"); at != std::string::npos;
+       at = h.find("<tr><td>", at + 1)) {
+    ++rows;
+    const std::size_t end = h.find("</td></tr>", at);
+    const std::size_t last = h.rfind("<td>", end) + 4;
+    const std::string status = h.substr(last, end - last);
+    EXPECT_TRUE(status.starts_with("reproduces") || status.starts_with("ruled out") ||
+                status.starts_with("untested"))
+        << status;
+  }
+  EXPECT_EQ(rows, 5u);
+  EXPECT_NE(h.find("id=\"explanations\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pneumachaos
