@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "model/level_field.hpp"
 #include "model/variation.hpp"
@@ -85,6 +86,10 @@ TEST(LevelField, TheTableIsTheSinesWithinTheHermiteBoundAndRepeats) {
     EXPECT_NEAR(*table->at(x + 0.6), *table->at(x), 1e-12) << x;
     EXPECT_NEAR(*table->at(x - 1.2), *table->at(x), 1e-12) << x;
   }
+  // A position a rounding error below the table's start wraps to its start, not past its end.
+  const std::optional<double> below = table->at(std::nextafter(-0.05, -1.0));
+  ASSERT_TRUE(below.has_value());
+  EXPECT_NEAR(*below, *table->at(-0.05), 1e-12);
   EXPECT_LE(worst, bound);
   EXPECT_GT(worst, 0.0);
   EXPECT_LE(table->lowest(), low);  // lowest() bounds the interpolant from below

@@ -292,18 +292,26 @@ void expect_jacobian_matches_differences(const Plant& plant, const Mode& mode,
   for (double d : dfdt) EXPECT_EQ(d, 0.0);  // the plant is autonomous
 }
 
+// A one-body plant's state sliding forward at mid-stroke: x 0.2 m, v 0.05 m/s, P1 0.3 MPa and
+// P2 0.2 MPa absolute, the rest at their start values.
+std::vector<double> sliding_state(const Plant& plant) {
+  std::vector<double> x = plant.initial_state();
+  const StateLayout& L = plant.layout();
+  x[L.x] = 0.2;
+  x[L.v] = 0.05;
+  x[L.P1] = 3.0e5;
+  x[L.P2] = 2.0e5;
+  return x;
+}
+
 TEST(Plant, ExactJacobianMatchesDifferencesOnTheSimpleRig) {
   Scenario s = simple_rig_scenario();
   s.friction.pressure_gain.coulomb_N_per_Pa =
       8e-6;  // pressure dependence couples friction to P1, P2
   s.friction.pressure_gain.static_N_per_Pa = 12e-6;
   const Plant simple(s);
-  std::vector<double> x = simple.initial_state();
+  std::vector<double> x = sliding_state(simple);
   const StateLayout& L = simple.layout();
-  x[L.x] = 0.2;
-  x[L.v] = 0.05;
-  x[L.P1] = 3.0e5;
-  x[L.P2] = 2.0e5;
   expect_jacobian_matches_differences(simple, simple.sliding_mode(+1), x);
   x[L.v] = 0.0;
   Mode stuck;
@@ -328,13 +336,7 @@ TEST(Plant, ExactJacobianMatchesDifferencesWithTheRandomSealLevel) {
   s.variation.seal_noise_correlation_m = 0.02;
   const Plant plant(vary(s, run_seed(5, 0, 0)));
   ASSERT_NE(plant.seal_friction().params().level_table, nullptr);
-  std::vector<double> x = plant.initial_state();
-  const StateLayout& L = plant.layout();
-  x[L.x] = 0.2;
-  x[L.v] = 0.05;
-  x[L.P1] = 3.0e5;
-  x[L.P2] = 2.0e5;
-  expect_jacobian_matches_differences(plant, plant.sliding_mode(+1), x);
+  expect_jacobian_matches_differences(plant, plant.sliding_mode(+1), sliding_state(plant));
 }
 
 TEST(Plant, ExactJacobianMatchesDifferencesOnTheTwoMassRig) {

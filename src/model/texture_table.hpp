@@ -64,7 +64,10 @@ inline std::optional<std::pair<std::size_t, double>> TextureTable::locate(
     double position_m) const {
   double t = (position_m - from_m_) / step_m_;
   const auto intervals = static_cast<double>(value_.size() - 1);
-  if (periodic_) t -= intervals * std::floor(t / intervals);
+  if (periodic_) {
+    t -= intervals * std::floor(t / intervals);
+    if (t >= intervals) t = 0.0;  // a t just below 0 rounds up to the period's end
+  }
   // The negated comparison also turns a NaN position away.
   if (!(t >= 0.0 && t < intervals)) return std::nullopt;
   const auto j = static_cast<std::size_t>(t);
