@@ -1,4 +1,4 @@
-// Adaptive maps against the full grid, in one process (issue 35): for each validation map
+// Adaptive maps against the full grid, in one process: for each validation map
 // (tests/adaptive_cases.hpp) the full sweep and the adaptive one, their agreement, the runs
 // saved and the wall-time ratio. Not a timed test: the numbers of docs/sweep.md.
 //

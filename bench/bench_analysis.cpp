@@ -127,7 +127,7 @@ void BM_Wolf(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(wolf_exponent(x, 100.0, w).lambda_per_s);
 }
 
-// Wolf's program on 1e5 samples of white noise, called directly (the analysis no longer runs
+// Wolf's program on 1e5 samples of white noise, called directly (the analysis does not run
 // it on records without deterministic structure), on the embedding the analysis chooses.
 void BM_WolfWhiteNoise(benchmark::State& state) {
   const auto x = testing::white_noise(static_cast<std::size_t>(state.range(0)));

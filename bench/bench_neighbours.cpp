@@ -1,6 +1,7 @@
 // The neighbour index alone: building it and querying the nearest neighbour of every tenth
 // point, on 1e4 and 1e5 samples of the Lorenz x coordinate (dt = 0.01) embedded with delay
-// 17, and on 1e5 samples of white noise in dimension 7. BM_Reference* is the previous index, kept here: nanoflann's tree reading the delay
+// 17, and on 1e5 samples of white noise in dimension 7. BM_Reference* is the
+// reference index: nanoflann's tree reading the delay
 // coordinates from the series (docs/notes/performance.md); same neighbours, printed beside ours.
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_neighbours
 #include <benchmark/benchmark.h>
@@ -35,8 +36,8 @@ DelayEmbedding embedding(const benchmark::State& state) {
   return {series(state), static_cast<std::size_t>(state.range(1)), state.range(2) == 0 ? 17u : 1u};
 }
 
-// The previous index's dataset: the coordinates read from the series on demand (this record
-// has no repeated value, so the previous index's groups were the identity).
+// The reference index's dataset: the coordinates read from the series on demand (this record
+// has no repeated value, so grouping equal points would change nothing).
 struct SeriesAdaptor {
   const DelayEmbedding* e;
   [[nodiscard]] std::size_t kdtree_get_point_count() const { return e->size(); }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What one calibration of the paper costs (issue 30's goal: a few hundred evaluations within
+# What one calibration of the paper costs (the goal: a few hundred evaluations within
 # an hour on 2 cores, scaling across MPI ranks). Runs `calibrate` on calibrations/paper.toml
 # with max_evaluations set to EVALUATIONS (default 30), on one thread, on two threads and, when
 # the binary has MPI and mpirun is installed, on 2 ranks of one thread each; prints the wall

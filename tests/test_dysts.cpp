@@ -19,9 +19,9 @@ using namespace pneumachaos::testing::dysts;
 
 // What the analysis reaches on the 54 chaotic records at 10,000 samples (docs/notes/
 // exponent_validation.md: 24 within 10 %, 47 covered, 51 called chaotic), a little below, as
-// floors: a change may raise them, not lower them. Lowered once, from 48 covered: Chen's
-// interval had held its truth only through a segment whose window lay on the divergence
-// curve's saturated top, which the window rule no longer takes (the page, "window on the rise").
+// floors: a change may raise them, not lower them. A segment's window never lies on the
+// divergence curve's saturated top (the page, "window on the rise"), so an interval cannot
+// cover its truth through that top.
 constexpr double kWithin10Floor = 0.42, kCoveredFloor = 0.87, kChaoticFloor = 0.93;
 
 bool long_tests() { return std::getenv("PNEUMACHAOS_LONG_TESTS") != nullptr; }

@@ -164,15 +164,15 @@ Scenario default_scenario() {
   // 15-30 N / 30-50 N measured for 32-40 mm standard seals; the drop over ~45 mm/s puts the
   // negative slope of the paper's Fig. 3 at its operating speeds. With the moving mass this
   // stroke implies, only the GMS seal stays chaotic (the LuGre seal of the frozen light-piston
-  // rig, docs/variants/frozen_light_piston.toml, does not: search 22).
-  // 4 GMS elements sharing 1e6 N/m, 250 um to reach their level: the stiff presliding of
-  // candidates G and H (an assumption: no measured value for a 40 mm lip seal, search 21).
+  // rig, docs/variants/frozen_light_piston.toml, does not; same notes, item 6).
+  // 4 GMS elements sharing 1e6 N/m, 250 um to reach their level: a stiff presliding regime
+  // (an assumption: no measured value for a 40 mm lip seal; same notes, item 5).
   // Their quasi-static limit where the contact slides fast (docs/model.md, "Friction"):
   // 32000 1/s is the lowest threshold tried that the chaotic (S2 0.35 mm^2) and stick-slip
   // (0.05-0.20) points never reach, as LuGre's 4000 1/s on the frozen rig; the fast-sliding
   // rows it enters stay within the default tolerances' own error.
-  // The frozen rig's LuGre bristles (Canudas de Wit et al. 1995), unused by GMS:
-  // kept so that `--set friction.model=lugre` gives search 22's LuGre comparison.
+  // LuGre bristles (Canudas de Wit et al. 1995), unused by GMS, so that
+  // `--set friction.model=lugre` compares the two seals on the same curve.
   s.friction.kind = FrictionKind::kGms;
   s.friction.curve = {.coulomb_N = 19.7,
                       .static_N = 47.0,
@@ -190,11 +190,11 @@ Scenario default_scenario() {
   s.load.coupling = LoadCoupling::kSpring;
   s.load.mass_kg = 1.5;
   // Piston + rod of a 40/16 mm cylinder weigh about 0.26 kg + 1.58 kg/m x stroke: 1.05 kg
-  // for this 500 mm stroke (search 22).
+  // for this 500 mm stroke (docs/notes/virtual_rig.md, "What was tried", 6).
   s.load.piston_mass_kg = 1.05;
-  // 12.46 kN/m keeps the 22.6 Hz mode of the frozen 0.53 kg rig with 1.05 kg (a ~1.7 mm
-  // sheet-metal bracket); the damping stays at 7 N*s/m, as search 22 measured candidate H
-  // (ratio 0.04; with the frozen rig's 0.06, 11 N*s/m, this rig loses the Fig. 7 row).
+  // 12.46 kN/m puts the mount's mode at 22.6 Hz with 1.05 kg (a ~1.7 mm sheet-metal
+  // bracket); 7 N*s/m is a damping ratio of 0.04 (at 0.06, 11 N*s/m, the rig loses the
+  // Fig. 7 row; same notes, item 6).
   s.load.coupling_stiffness_N_per_m = 12.46e3;
   s.load.coupling_damping_Ns_per_m = 7.0;
   // Every guide field not named here at its default.
