@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What one calibration of the paper costs (the goal: a few hundred evaluations within
-# an hour on 2 cores, scaling across MPI ranks). Runs `calibrate` on calibrations/paper.toml
+# an hour on 2 cores, scaling across MPI ranks). Runs `calibrate` on scenarios/calibrations/paper.toml
 # with max_evaluations set to EVALUATIONS (default 30), on one thread, on two threads and, when
 # the binary has MPI and mpirun is installed, on 2 ranks of one thread each; prints the wall
 # and CPU time per accepted evaluation of each and the wall time 300 accepted evaluations would

@@ -5,7 +5,7 @@ Usage:
     python3 bench/transducer_robustness.py PNEUMACHAOS OUT_DIR [--surrogates N]
         [--max-false-chaos N]
 
-Three rigs (the default, the one-body rigid rig, docs/variants/frozen_light_piston.toml) at
+Three rigs (the default, the one-body rigid rig, scenarios/variants/frozen_light_piston.toml) at
 S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and 5 % bore texture, 30 s or
 to the stroke end (records of at least 3.2 s kept), each analysed from 2 s clean and with:
 white noise of 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation over +-0.5 m/s,
@@ -32,7 +32,7 @@ import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RIGS = {'default': [], 'rigid': ['--set', 'load.coupling=rigid', '--set', 'load.mass_kg=1.5'],
-        'frozen': [os.path.join(REPO, 'docs/variants/frozen_light_piston.toml')]}
+        'frozen': [os.path.join(REPO, 'scenarios/variants/frozen_light_piston.toml')]}
 S2 = [0.05, 0.2, 0.35, 0.5, 0.65, 1.25, 3.35]
 REPEATS = 3
 RATE_HZ = 1000.0

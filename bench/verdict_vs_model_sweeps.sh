@@ -3,7 +3,7 @@
 # rows S2 0.05-0.65 mm^2, with (2 runs) and without (1 run) seal variation: 360 runs, ~1 min on
 # 2 cores (3 min with --relabel). Run from an empty directory; PNEUMACHAOS_CLI names the binary.
 # usage: verdict_vs_model_sweeps.sh [--relabel] [--set KEY=VALUE ...] [--surrogates N]
-# [SCENARIO.toml]  (the scenario goes to every sweep, e.g. docs/variants/gms_candidate.toml;
+# [SCENARIO.toml]  (the scenario goes to every sweep, e.g. scenarios/variants/gms_candidate.toml;
 # default: the built-in scenario). --relabel runs the sweeps twice more with other settings of
 # the model's exponent (renormalised every 0.04 s; 2 s of start-up discarded) and adds the
 # table of runs whose label all three settings give (docs/notes/analysis.md, "Validation

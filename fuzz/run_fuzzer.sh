@@ -9,7 +9,7 @@ shift $(( $# < 7 ? $# : 7 ))
 mkdir -p "$corpus"
 cp -n "$seeds"/* "$corpus"/ 2>/dev/null || true
 # A seed file kept elsewhere is copied under its directory's name too: two files of one name
-# (tests/data/x.toml, calibrations/x.toml) stay two seeds.
+# (tests/data/x.toml, scenarios/calibrations/x.toml) stay two seeds.
 for file in "$@"; do
   cp -n "$file" "$corpus/$(basename "$(dirname "$file")")_$(basename "$file")"
 done

@@ -114,7 +114,7 @@ for page in "$stage"/docs/guide/*.md; do
   python_code=$(awk '/^```\{\.python \.run\}/ {block = 1; next} /^```/ {block = 0; next} block' "$page")
   [ -z "$cmds" ] && [ -z "$python_code" ] && continue
   work="$stage/docs/guide/run/$name"
-  mkdir -p "$work" && ln -s "$repo/docs" "$work/docs"
+  mkdir -p "$work" && ln -s "$repo/docs" "$work/docs" && ln -s "$repo/scenarios" "$work/scenarios"
   while IFS= read -r cmd; do
     ran=$((ran + 1))
     start=$(date +%s.%N)

@@ -17,7 +17,7 @@ struct AdaptiveCase {
   double min_runs_ratio;  ///< full-grid runs per adaptive run at least this (4 on the paper's maps)
 };
 
-/// `variants_dir`: docs/variants. Each map as reproduce runs it: the paper's Ps and total moving
+/// `variants_dir`: scenarios/variants. Each map as reproduce runs it: the paper's Ps and total moving
 /// mass, 5 runs per point, 3 % friction variation and a 2 % bore texture per run.
 inline std::vector<AdaptiveCase> adaptive_cases(const std::string& variants_dir) {
   const auto spec = [](Scenario base, std::vector<GridAxis> axes) {

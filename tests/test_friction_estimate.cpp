@@ -65,7 +65,7 @@ Scenario rig(FrictionKind kind, double S2_mm2) {
   s.friction.curve.stribeck_velocity_m_per_s = 0.01;
   s.friction.curve.stribeck_exponent = 2.0;
   s.circuit.S2_m2 = S2_mm2 * 1e-6;
-  s.cylinder.frozen_position_m = 0.42;  // as docs/variants/simple_rig.toml
+  s.cylinder.frozen_position_m = 0.42;  // as scenarios/variants/simple_rig.toml
   return s;
 }
 

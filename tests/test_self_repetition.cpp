@@ -167,7 +167,7 @@ TEST(SelfRepetition, VetoComparesTheGrowthWithTheClaimedExponent) {
 }
 
 // A record the divergence alone would call chaotic on the frozen light-piston rig
-// (docs/variants/frozen_light_piston.toml): 3.0 kg, S1 3.60, S2 0.35 mm^2, whose velocity
+// (scenarios/variants/frozen_light_piston.toml): 3.0 kg, S1 3.60, S2 0.35 mm^2, whose velocity
 // envelope repeats; the model's own exponent is 0 within its error.
 TEST(SelfRepetition, RigFalsePositiveIsNoLongerChaotic) {
   const Scenario s = frozen_light_piston(

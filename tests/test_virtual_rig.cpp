@@ -1,6 +1,6 @@
 // The virtual rig's acceptance (docs/notes/virtual_rig.md holds the evidence around these numbers).
 // The chaos of the frozen light-piston rig (volumes frozen at 420 mm, 0.53 kg, LuGre seal:
-// docs/variants/frozen_light_piston.toml), pinned so that no change can silently lose that
+// scenarios/variants/frozen_light_piston.toml), pinned so that no change can silently lose that
 // mechanism; and the paper's chaotic point on the DEFAULT rig (volumes following the piston
 // over 500 mm).
 #include <gtest/gtest.h>

@@ -12,7 +12,7 @@ import pneumachaos as pc
 
 CLI = os.environ.get("PNEUMACHAOS_CLI", "")
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-SIMPLE_RIG = os.path.join(REPO, "docs", "variants", "simple_rig.toml")
+SIMPLE_RIG = os.path.join(REPO, "scenarios", "variants", "simple_rig.toml")
 
 
 def numbers(tree, path=""):

@@ -13,7 +13,7 @@ import pytest
 import pneumachaos as pc
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-SIMPLE_RIG = os.path.join(REPO, "docs", "variants", "simple_rig.toml")
+SIMPLE_RIG = os.path.join(REPO, "scenarios", "variants", "simple_rig.toml")
 
 
 def lorenz_x(n, dt=0.01, transient=2000):
@@ -176,7 +176,7 @@ def test_sweep_with_surrogates_and_the_model_exponent(tmp_path):
 
 def test_friction_and_fit_on_a_simulated_record():
     """A stick-slip record of the simple rig (one rigid mass, Stribeck seal Fc 20 N, Fs 40 N,
-    docs/variants/simple_rig.toml): the friction fit gets the seal back, and `fit` the
+    scenarios/variants/simple_rig.toml): the friction fit gets the seal back, and `fit` the
     exhaust valve area from a start 20 % off (docs/friction.md, docs/notes/model_fit.md give the
     accuracies on degraded records; this record is clean)."""
     rig = pc.Scenario.from_toml(SIMPLE_RIG)

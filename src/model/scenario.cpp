@@ -164,7 +164,7 @@ Scenario default_scenario() {
   // 15-30 N / 30-50 N measured for 32-40 mm standard seals; the drop over ~45 mm/s puts the
   // negative slope of the paper's Fig. 3 at its operating speeds. With the moving mass this
   // stroke implies, only the GMS seal stays chaotic (the LuGre seal of the frozen light-piston
-  // rig, docs/variants/frozen_light_piston.toml, does not; same notes, item 6).
+  // rig, scenarios/variants/frozen_light_piston.toml, does not; same notes, item 6).
   // 4 GMS elements sharing 1e6 N/m, 250 um to reach their level: a stiff presliding regime
   // (an assumption: no measured value for a 40 mm lip seal; same notes, item 5).
   // Their quasi-static limit where the contact slides fast (docs/model.md, "Friction"):

@@ -13,14 +13,14 @@ struct Explanation {
 // Each row's numbers are those of docs/notes/virtual_rig.md, where its commands are.
 constexpr std::array<Explanation, 5> kExplanations{{
     {"The paper's deterministic one-body structure",
-     "<code>calibrate calibrations/paper.toml</code>: CMA-ES over the ten keys whose bounds have "
+     "<code>calibrate scenarios/calibrations/paper.toml</code>: CMA-ES over the ten keys whose bounds have "
      "a source; 330 evaluations, and 660 at seeds 1 and 2",
      "at most 6 of the 10 fitted claims together; the spectrum claim never (the strongest line "
      "held at least 27 % of the power); the example judged chaotic at 1 and 5 evaluations, "
      "never with the maps' claims; 5 to 7 of 20 claims on the full report at its best points",
      "ruled out within these bounds"},
     {"Two-state seal memory (rate and state)",
-     "<code>calibrate docs/notes/two_state_seal_search.toml</code>: CMA-ES, 294, 588 and 588 "
+     "<code>calibrate scenarios/calibrations/two_state_seal_search.toml</code>: CMA-ES, 294, 588 and 588 "
      "evaluations; bounds without a source",
      "the example judged chaotic at 83 to 133 evaluations, its strongest line never under 37 % "
      "of the power; with the Fig. 4 map in the objective (294 evaluations) no chaos beyond the "
@@ -39,7 +39,7 @@ constexpr std::array<Explanation, 5> kExplanations{{
      "mm<sup>2</sup>, far from the paper's chaos region",
      "ruled out as the source of the paper's chaos region"},
     {"A random seal (a random friction level along the bore)",
-     "<code>calibrate calibrations/random_seal.toml</code>: CMA-ES, 24 evaluations over the "
+     "<code>calibrate scenarios/calibrations/random_seal.toml</code>: CMA-ES, 24 evaluations over the "
      "field's level 0-20 % and correlation length 1-50 mm (exploratory bounds); 30 s records at "
      "the Fig. 7 point with the volumes frozen, levels 0-25 %",
      "the calibration: at most 3 of 9 fitted claims, the example never chaotic by the verdict, "
