@@ -3,7 +3,7 @@
 # sweeps on oneTBB threads: the runner, the journal, kill/resume, --replay, adaptive maps;
 # the report's progress ticker). A clean run means zero ThreadSanitizer reports: any report
 # makes the process exit non-zero (exitcode=66), so its test fails. The label and how to give
-# it to a new test: tests/parallel_labels.cmake; suppressions: scripts/tsan.supp.
+# it to a new test: tests/test_labels.cmake; suppressions: scripts/tsan.supp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
