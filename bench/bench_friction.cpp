@@ -1,6 +1,6 @@
 // Time of `friction`'s work on a 6,000-sample record (6 s at 1 kHz, a stick-slip record of
 // the simple rig degraded like a rig's A/D): the estimate alone, and the estimate with all
-// four fits (classic, stribeck, stribeck_delta, lugre). Issue 13's goal: under 0.5 s.
+// four fits (classic, stribeck, stribeck_delta, lugre). The goal: under 0.5 s.
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_friction
 #include <benchmark/benchmark.h>
 

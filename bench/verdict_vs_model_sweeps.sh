@@ -1,5 +1,5 @@
 #!/bin/sh
-# Issue 11 item 7: the record verdict against the model's own exponent, the four map conditions,
+# The record verdict against the model's own exponent, the four map conditions,
 # rows S2 0.05-0.65 mm^2, with (2 runs) and without (1 run) seal variation: 360 runs, ~1 min on
 # 2 cores (3 min with --relabel). Run from an empty directory; PNEUMACHAOS_CLI names the binary.
 # usage: verdict_vs_model_sweeps.sh [--relabel] [--set KEY=VALUE ...] [--surrogates N]

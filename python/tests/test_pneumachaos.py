@@ -233,8 +233,8 @@ def test_adaptive_sweep_marks_inferred_points(tmp_path):
 
 
 def test_set_changes_in_place_and_with_value_copies():
-    """Issue 33: `s2 = s.set(...)` changed s too, unannounced. set is in place and says so;
-    with_value returns a changed copy and leaves the original alone."""
+    """set changes the scenario in place and its docstring says so; with_value returns a
+    changed copy and leaves the original alone (`s2 = s.set(...)` must not surprise)."""
     s = pc.Scenario.default()
     assert "IN PLACE" in pc.Scenario.set.__doc__
     s2 = s.with_value("circuit.S2_mm2", 1.0)
