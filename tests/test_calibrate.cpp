@@ -110,6 +110,21 @@ TEST(CalibrationSpec, RefusesInconsistentObjectivesAndOptimizers) {
   EXPECT_NE(refusal(kFree + kObjective + "[objective.grid]\n").find("spec.toml:"), std::string::npos);
 }
 
+// judge = "paper" (claims and incidence_map objectives) asks for the paper's three indices;
+// any other word is refused naming the key, and a records objective has no chaos to judge.
+TEST(CalibrationSpec, ReadsTheJudgeAndRefusesAnotherWord) {
+  EXPECT_FALSE(parse_calibration_spec(kFree + kObjective, "spec.toml").objective.paper_judge);
+  EXPECT_TRUE(parse_calibration_spec(kFree + kObjective + "judge = \"paper\"\n", "spec.toml")
+                  .objective.paper_judge);
+  const std::string msg = refusal(kFree + kObjective + "judge = \"Paper\"\n");
+  EXPECT_NE(msg.find("objective.judge"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("\"strict\" or \"paper\""), std::string::npos) << msg;
+  EXPECT_NE(refusal(kFree + "[objective]\nkind = \"records\"\njudge = \"paper\"\n"
+                    "records = [ { file = \"r.csv\" } ]\n")
+                .find("objective.judge"),
+            std::string::npos);
+}
+
 // fig4_s1_above_s2 compares points with S1 > S2 against points with S1 <= S2: reproduce
 // --quick's grid (S2 up to 0.95, S1 from 2.45 mm^2) has none of the second kind, so the claim
 // could never be scored there; the paper's S2 axis (to 4.40 mm^2) has both.

@@ -6,8 +6,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <fmt/format.h>
 
+#include "calibrate/condition_runs.hpp"
 #include "calibrate/evaluator.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
 #include "calibrate/measured_map.hpp"
@@ -52,6 +54,65 @@ TEST(CalibrationIncidenceMap, TheModelsOwnMapIsMatchedAtItsPoint) {
   // Twice the Coulomb friction moves the map (more stick-slip): the check can fail.
   EXPECT_GT(ev.evaluate({1.0}, dir + "/b").objective, 0.05);
   std::filesystem::remove_all(dir);
+}
+
+// Under judge = "paper" the objective's maps are judged by the paper's three indices: a map
+// "measured" as the paper's incidence is matched exactly at its point, and the evaluation's
+// runs carry the paper's judgement.
+TEST(CalibrationIncidenceMap, UnderThePapersJudgeTheChaosIsThePapersIncidence) {
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           fmt::format("pneumachaos_incidence_paper_{}", ::getpid())).string();
+  std::filesystem::remove_all(dir);
+  const std::string free = "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n";
+  SweepSpec truth;
+  truth.base = parse_calibration_spec(free + "[objective]\nkind = \"claims\"\nexample = true\n"
+                                      "claims = { fig7_acf = 1 }\n", "x.toml").base;
+  truth.base.run.duration_s = 6.0;
+  truth.axes = {parse_grid_axis("circuit.S1_mm2=2.7:2.7:0.3"), parse_grid_axis("circuit.S2_mm2=0.05:0.65:0.3")};
+  truth.repeats = 1;
+  truth.paper_judge = true;
+  SweepOptions so;
+  so.out_dir = dir + "/truth";
+  so.progress = false;
+  const SweepSummary t = run_sweep(truth, so);
+  std::string csv = "S1_mm2,S2_mm2,stick_slip,chaos\n";
+  for (const PointSummary& p : t.per_point)
+    csv += fmt::format("{},{},{},{}\n", p.coordinates[0], p.coordinates[1], p.stick_slip_incidence,
+                       p.paper_chaos_incidence);
+  const std::string measured = dir + "/measured.csv";
+  std::ofstream(measured) << csv;
+  const CalibrationSpec spec = parse_calibration_spec(
+      free + "[objective]\nkind = \"incidence_map\"\njudge = \"paper\"\nfile = \"" + measured +
+          "\"\nrepeats = 1\nduration_s = 6\n",
+      "spec.toml");
+  const detail::Evaluator ev(spec, {1, 1}, read_measured_map(measured));
+  EXPECT_EQ(ev.evaluate({0.0}, dir + "/a").terms, (std::vector<double>{0.0, 0.0}));
+  std::ifstream runs(dir + "/a/map/runs.csv");
+  std::string header, line;
+  std::getline(runs, header);
+  EXPECT_NE(header.find(",paper_chaotic"), std::string::npos) << header;
+  std::size_t judged = 0;  // paper_chaotic, the last column, is 0 or 1 where judged
+  while (std::getline(runs, line)) judged += !line.empty() && line.back() != ',';
+  EXPECT_GT(judged, 0u);
+  std::filesystem::remove_all(dir);
+}
+
+// Under judge = "paper" a claims objective reads the example by the paper's three indices
+// too: its verdict is the paper's judgement, and the row names it.
+TEST(CalibrationClaims, UnderThePapersJudgeTheExampleIsJudgedByItsIndices) {
+  const CalibrationSpec spec = parse_calibration_spec(
+      "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n"
+      "[objective]\nkind = \"claims\"\nexample = true\nexample_record_s = 6\njudge = \"paper\"\n"
+      "claims = { fig7_verdict = 1 }\n",
+      "spec.toml");
+  ClaimInputs strict, paper;
+  detail::add_example(spec.objective, spec.base, strict);
+  detail::run_conditions(spec.objective, spec.base, spec.objective.fit, "", {1, 1}, paper);
+  ASSERT_TRUE(strict.example_paper_chaotic.has_value());
+  EXPECT_EQ(paper.example_chaotic, strict.example_paper_chaotic);
+  EXPECT_NE(paper.example_regime.find("the paper's three indices"), std::string::npos)
+      << paper.example_regime;
+  EXPECT_EQ(strict.example_regime.find("the paper's"), std::string::npos);
 }
 
 }  // namespace

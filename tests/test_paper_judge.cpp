@@ -92,5 +92,29 @@ TEST(PaperJudge, EachIndexAloneRefusesAndTheThresholdsAreTheClaimRules) {
   EXPECT_FALSE(paper_judge(short_acf).evaluated);
 }
 
+// Chaos needs all three indices, so one that refuses decides without Wolf's exponent; where
+// the other two say chaos, a missing exponent leaves the record unjudged.
+TEST(PaperJudge, ARefusingIndexDecidesWithoutWolfsExponent) {
+  AnalysisResult r;
+  r.acf.rate_Hz = kRate_Hz;
+  r.acf.r.assign(2000, 0.0);
+  r.spectrum.peak_share = 0.6;  // a dominant line
+  const PaperJudgement line = paper_judge(r);
+  ASSERT_TRUE(line.evaluated) << line.why;
+  EXPECT_FALSE(line.chaotic);
+  EXPECT_FALSE(line.wolf_computed);
+  EXPECT_NE(describe(line).find("not computed, not needed"), std::string::npos);
+  AnalysisResult acf = r;
+  acf.spectrum.peak_share = 0.1;
+  acf.acf.r[1500] = 0.5;  // the autocorrelation has not died after 1 s
+  EXPECT_TRUE(paper_judge(acf).evaluated);
+  EXPECT_FALSE(paper_judge(acf).chaotic);
+  AnalysisResult open = r;
+  open.spectrum.peak_share = 0.1;  // both indices at hand say chaos
+  const PaperJudgement undecided = paper_judge(open);
+  EXPECT_FALSE(undecided.evaluated);
+  EXPECT_NE(undecided.why.find("Wolf"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pneumachaos

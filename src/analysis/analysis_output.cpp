@@ -79,7 +79,8 @@ nlohmann::json repetition_json(const AnalysisResult& r) {
           {"method", "RMS of x(t + L) - x(t) relative to sqrt(2) std, per one-period window"}};
 }
 
-// The paper's three indices (pneumachaos/analysis/paper_judge.hpp); null where one is missing.
+// The paper's three indices (pneumachaos/analysis/paper_judge.hpp); null where one is missing
+// (Wolf's exponent, where the other two already refuse).
 nlohmann::json paper_judge_json(const PaperJudgement& p) {
   if (!p.evaluated) return {{"chaotic", nullptr}, {"status", p.why}};
   return {{"chaotic", p.chaotic},
@@ -87,9 +88,9 @@ nlohmann::json paper_judge_json(const PaperJudgement& p) {
           {"peak_share", quantity(p.peak_share, "-")},
           {"acf_converges", p.acf_converges},
           {"acf_envelope_after_1s", quantity(*p.acf_envelope, "-")},
-          {"wolf_positive", p.wolf_positive},
-          {"wolf", quantity(p.wolf_per_s, "1/s")},
-          {"wolf_uncertainty", quantity(p.wolf_uncertainty_per_s, "1/s")},
+          {"wolf_positive", p.wolf_computed ? nlohmann::json(p.wolf_positive) : nullptr},
+          {"wolf", p.wolf_computed ? quantity(p.wolf_per_s, "1/s") : nullptr},
+          {"wolf_uncertainty", p.wolf_computed ? quantity(p.wolf_uncertainty_per_s, "1/s") : nullptr},
           {"thresholds", {{"peak_share", kPaperPeakShare},
                           {"acf_envelope", kPaperAcfEnvelope},
                           {"acf_after", quantity(kPaperAcfAfter_s, "s")},

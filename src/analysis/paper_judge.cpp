@@ -26,16 +26,20 @@ PaperJudgement paper_judge(const AnalysisResult& a) {
     j.why = fmt::format("the autocorrelation does not reach {} s", kPaperAcfAfter_s);
     return j;
   }
-  if (!a.wolf_run || !std::isfinite(a.wolf.lambda_per_s)) {
+  j.flat_spectrum = j.peak_share <= kPaperPeakShare;
+  j.acf_converges = *j.acf_envelope <= kPaperAcfEnvelope;
+  j.wolf_computed = a.wolf_run && std::isfinite(a.wolf.lambda_per_s);
+  if (j.wolf_computed) {
+    j.wolf_per_s = a.wolf.lambda_per_s;
+    j.wolf_uncertainty_per_s = a.wolf.uncertainty_per_s;
+    j.wolf_positive = j.wolf_per_s > kPaperExponentSigmas * j.wolf_uncertainty_per_s;
+  } else if (j.flat_spectrum && j.acf_converges) {
+    // The two indices at hand say chaos: only Wolf's exponent could decide.
     j.why = "Wolf's exponent was not computed";
     return j;
   }
+  // Chaos needs all three indices: one that refuses decides without the others.
   j.evaluated = true;
-  j.wolf_per_s = a.wolf.lambda_per_s;
-  j.wolf_uncertainty_per_s = a.wolf.uncertainty_per_s;
-  j.flat_spectrum = j.peak_share <= kPaperPeakShare;
-  j.acf_converges = *j.acf_envelope <= kPaperAcfEnvelope;
-  j.wolf_positive = j.wolf_per_s > kPaperExponentSigmas * j.wolf_uncertainty_per_s;
   j.chaotic = j.flat_spectrum && j.acf_converges && j.wolf_positive;
   return j;
 }
@@ -43,14 +47,18 @@ PaperJudgement paper_judge(const AnalysisResult& a) {
 std::string describe(const PaperJudgement& j) {
   if (!j.evaluated) return "not judged: " + j.why;
   const auto mark = [](bool yes) { return yes ? "yes" : "no"; };
+  const std::string wolf =
+      j.wolf_computed ? fmt::format("{}, {:.3g} +- {:.2g} 1/s, above {} sigma",
+                                    mark(j.wolf_positive), j.wolf_per_s,
+                                    j.wolf_uncertainty_per_s, kPaperExponentSigmas)
+                      : std::string("not computed, not needed");
   return fmt::format(
       "{} (no dominant line: {}, the largest holds {:.0f} % of the power, at most {:.0f} %; "
       "autocorrelation converges: {}, {:.2f} after {} s, at most {}; Wolf's exponent "
-      "positive: {}, {:.3g} +- {:.2g} 1/s, above {} sigma)",
+      "positive: {})",
       j.chaotic ? "chaotic" : "not chaotic", mark(j.flat_spectrum), 100.0 * j.peak_share,
       100.0 * kPaperPeakShare, mark(j.acf_converges), *j.acf_envelope, kPaperAcfAfter_s,
-      kPaperAcfEnvelope, mark(j.wolf_positive), j.wolf_per_s, j.wolf_uncertainty_per_s,
-      kPaperExponentSigmas);
+      kPaperAcfEnvelope, wolf);
 }
 
 }  // namespace pneumachaos

@@ -75,6 +75,8 @@ nlohmann::json front_json(const ClaimFront& f) {
   return j;
 }
 
+std::string judge_name(const ObjectiveSpec& o) { return o.paper_judge ? "paper" : "strict"; }
+
 std::string calibration_json(const CalibrationSpec& spec, const CalibrationResult& r,
                              const std::vector<std::string>& terms,
                              const std::optional<ClaimFront>& front) {
@@ -83,6 +85,7 @@ std::string calibration_json(const CalibrationSpec& spec, const CalibrationResul
   j["algorithm"] = spec.optimizer.algorithm;
   j["seed"] = spec.optimizer.seed;
   j["evaluations"] = r.evaluations;
+  if (spec.objective.kind != ObjectiveKind::kRecords) j["judge"] = judge_name(spec.objective);
   j["best"]["evaluation"] = r.best;
   j["best"]["objective"] = r.best_objective;
   for (std::size_t i = 0; i < spec.free.size(); ++i)
@@ -126,6 +129,11 @@ std::string summary_md(const CalibrationSpec& spec, const CalibrationResult& r,
       "## Best point\n\n| key | value | bounds | source |\n|---|---|---|---|\n",
       spec.path, spec.optimizer.algorithm, spec.optimizer.population, spec.optimizer.seed,
       r.evaluations, r.best, r.best_objective, objective_meaning(spec.objective.kind));
+  if (spec.objective.kind != ObjectiveKind::kRecords)
+    out.insert(out.find("## Best point"),
+               spec.objective.paper_judge
+                   ? "Chaos judged by the paper's three indices (`judge = \"paper\"`).\n\n"
+                   : "Chaos judged by the regime verdict (`judge = \"strict\"`).\n\n");
   for (std::size_t i = 0; i < spec.free.size(); ++i)
     out += fmt::format("| {} | {:.6g} | {:g} to {:g}{} | {} |\n", spec.free[i].key,
                        r.best_values[i], spec.free[i].lower, spec.free[i].upper,

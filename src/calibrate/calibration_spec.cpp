@@ -318,6 +318,14 @@ void read_record_settings(Table& r, ObjectiveSpec& o, const std::string& dir) {
     throw Error(r.where("velocity_scale_mm_per_s"), "expected 0 < velocity_scale_mm_per_s <= 10000");
 }
 
+// judge = "strict" (the default: the regime verdict) or "paper" (the paper's three indices).
+bool read_judge(Table& r) {
+  const std::string judge = r.text("judge").value_or("strict");
+  if (judge != "strict" && judge != "paper")
+    throw Error(r.where("judge"), fmt::format("expected judge = \"strict\" or \"paper\", not \"{}\"", judge));
+  return judge == "paper";
+}
+
 ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, const std::string& dir) {
   Table r(t, origin, "objective.");
   ObjectiveSpec o;
@@ -328,6 +336,7 @@ ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, co
            : kind == "incidence_map" ? ObjectiveKind::kIncidenceMap
                                      : ObjectiveKind::kRecords;
   o.maps = read_map_settings(r);
+  if (o.kind != ObjectiveKind::kRecords) o.paper_judge = read_judge(r);
   if (o.kind == ObjectiveKind::kRecords) {
     read_record_settings(r, o, dir);
   } else if (o.kind == ObjectiveKind::kClaims) {

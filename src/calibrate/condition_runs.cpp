@@ -31,6 +31,7 @@ SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCon
   spec.axes = o.maps.axes;
   spec.repeats = o.maps.repeats;
   spec.adaptive.enabled = o.maps.adaptive;
+  spec.paper_judge = o.paper_judge;
   // The damping claims read a point's motion on the coarse lattice, which every map runs.
   return spec;
 }
@@ -62,7 +63,11 @@ void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
     }
     slot(inputs, c.role) = run_map(spec, dir + "/" + c.role, settings);
   }
-  if (!conditions.example) return;
+  if (conditions.example) add_example(o, scenario, inputs);
+  if (o.paper_judge) inputs = under_paper_judge(inputs);
+}
+
+void add_example(const ObjectiveSpec& o, const Scenario& scenario, ClaimInputs& inputs) {
   try {
     // The example runs without the maps' scatter and texture, as reproduce's does
     // (run_example keeps only the seal's random level).

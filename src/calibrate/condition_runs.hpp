@@ -20,11 +20,15 @@ struct RunSettings {
 SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCondition& c);
 
 /// Runs every map of `conditions` into dir/<role> (resumed when there) and the example, and
-/// fills the claims' inputs. A scenario the model refuses or a run that fails leaves its inputs
-/// empty (the claims then are "not reproduced"); only an unusable directory throws.
+/// fills the claims' inputs, judged as `o.paper_judge` says. A scenario the model refuses or a
+/// run that fails leaves its inputs empty (the claims then are "not reproduced"); only an
+/// unusable directory throws.
 void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
                     const ConditionSet& conditions, const std::string& dir,
                     const RunSettings& settings, ClaimInputs& inputs);
+
+/// Runs the example (Figs. 3 and 7) and adds its inputs; a failed run leaves them empty.
+void add_example(const ObjectiveSpec& o, const Scenario& scenario, ClaimInputs& inputs);
 
 /// Runs one sweep quietly into dir (resumed when there).
 SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSettings& settings);

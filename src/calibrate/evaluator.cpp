@@ -62,6 +62,7 @@ Evaluation Evaluator::map_errors(const Scenario& s, const std::string& dir) cons
   sweep.axes = {GridAxis{"circuit.S1_mm2", m.s1}, GridAxis{"circuit.S2_mm2", m.s2}};
   sweep.repeats = spec_.objective.maps.repeats;
   sweep.adaptive.enabled = spec_.objective.maps.adaptive;
+  sweep.paper_judge = spec_.objective.paper_judge;
   Evaluation e{1.0, {kNaN, kNaN}};
   try {
     sweep.validate();
@@ -70,7 +71,8 @@ Evaluation Evaluator::map_errors(const Scenario& s, const std::string& dir) cons
   } catch (const Error&) {
     return e;  // the model refuses this scenario: the worst value
   }
-  const SweepSummary r = run_map(sweep, dir + "/map", settings_);
+  const SweepSummary swept = run_map(sweep, dir + "/map", settings_);
+  const SweepSummary r = sweep.paper_judge ? under_paper_judge(swept) : swept;
   double ss = 0.0, ch = 0.0;
   for (std::size_t i = 0; i < r.per_point.size(); ++i) {
     ss += std::pow(r.per_point[i].stick_slip_incidence - m.stick_slip[i], 2);

@@ -27,9 +27,12 @@ std::optional<double> acf_envelope_after(const std::vector<double>& r, double ra
                                          double after_s);
 
 struct PaperJudgement {
-  bool evaluated = false;  ///< false: an index could not be computed (see why)
-  bool chaotic = false;    ///< all three indices say so
+  /// false: an index that could decide was not computed (see why). A record whose spectrum
+  /// or autocorrelation already refuses is judged without Wolf's exponent.
+  bool evaluated = false;
+  bool chaotic = false;  ///< all three indices say so
   bool flat_spectrum = false, acf_converges = false, wolf_positive = false;
+  bool wolf_computed = false;  ///< false: wolf_per_s and its uncertainty are not set
   double peak_share = 0.0;
   std::optional<double> acf_envelope;  ///< after kPaperAcfAfter_s
   double wolf_per_s = 0.0, wolf_uncertainty_per_s = 0.0;

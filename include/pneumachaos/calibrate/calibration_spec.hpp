@@ -79,6 +79,10 @@ struct ObjectiveSpec {
   bool example_model_exponent = false;  ///< the model's own exponent (shown, never scored)
   std::string measured_map;    ///< kIncidenceMap: the CSV's path (relative to the spec's folder)
   double stick_slip_weight = 1.0, chaos_weight = 1.0;  ///< kIncidenceMap
+  /// kClaims, kIncidenceMap (`judge = "paper"`): which runs count as chaotic is decided by the
+  /// paper's three indices instead of the regime verdict (pneumachaos/analysis/paper_judge.hpp);
+  /// the claims' rules and the measured map are the same.
+  bool paper_judge = false;
   std::vector<RecordCondition> records;  ///< kRecords
   /// kRecords: the segment-wise simulation's segment and the noise scales of its residuals,
   /// as `fit` uses them (docs/notes/model_fit.md, "Method").
