@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -64,6 +65,9 @@ Json cell_json(const PointSummary& p, const RunsTable& runs) {
             {"runs", p.runs},
             {"failed", p.failed},
             {"chaos", p.chaos_incidence},
+            // null where the map was not judged by the paper's three indices
+            {"paper_chaos", std::isfinite(p.paper_chaos_incidence) ? Json(p.paper_chaos_incidence)
+                                                                   : Json(nullptr)},
             {"stick_slip", p.stick_slip_incidence},
             {"inferred", p.inferred}};
   Json regimes = Json::object();
@@ -88,6 +92,7 @@ Json map_json(const MapData& m, const std::string& report_dir) {
           {"x", m.spec.axes[0].values},
           {"y", m.spec.axes[1].values},
           {"repeats", m.spec.repeats},
+          {"paper_judged", m.spec.paper_judge},
           // A run's command is this with " --replay P:R -o run_P_R.csv": written once per map,
           // as the full map would otherwise carry it thousands of times.
           {"replay", "pneumachaos sweep " + replay_arguments(m)},

@@ -57,7 +57,8 @@ const char* kExplore =
     "<h2 id=\"explore-maps\">Explore the maps</h2>\n<p>The four incidence maps of Figs. 4-6 "
     "and the 4.5 kg condition, cell by cell: hover a cell for its runs' verdicts, click it for "
     "its runs (the numbers of the map's <code>runs.csv</code>) and the command that runs each "
-    "again alone. A claim's figure link above leads here and marks the cells its rule read. "
+    "again alone. The maps are shaded by the regime verdict or, at your choice, by the paper's "
+    "three indices. A claim's figure link above leads here and marks the cells its rule read. "
     "The figures below are the same maps for print.</p>\n<div id=\"explore\"><noscript>The "
     "explorer needs JavaScript; the figures and <code>sweeps/*/runs.csv</code> hold the same "
     "data.</noscript></div>\n";

@@ -39,6 +39,7 @@ try {
   if (!(ready < 2000)) fail('the maps were not usable within 2 s of opening');
 
   await checkCell(page);
+  await checkJudge(page);
   await checkClaim(page);
   for (const width of [1300, 420]) await screenshot(page, width);
 } finally {
@@ -69,7 +70,7 @@ async function checkCell(page) {
   if (rows.length !== mine.length) fail(`panel lists ${rows.length} runs, runs.csv ${mine.length}`);
   mine.forEach((r, k) => {
     for (const col of ['repeat', 'seed', 'regime', 'lambda_per_s', 'lambda_uncertainty_per_s',
-      'zero_one_K']) {
+      'zero_one_K', 'paper_chaotic']) {
       if (!rows[k] || rows[k][col] !== r[col])
         fail(`run ${point}:${r.repeat} ${col}: panel ${rows[k] && rows[k][col]}, ` +
           `runs.csv ${r[col]}`);
@@ -81,6 +82,31 @@ async function checkCell(page) {
   console.log(`cell ${point}: ${rows.length} runs as in runs.csv`);
   await checkCharts(page, mine, clicked);
   await checkTwins(page, point);
+}
+
+// The judge's choice: under the paper's three indices every cell's grey is its
+// paper_chaos_incidence in points.csv, and back under the verdict its chaos_incidence.
+async function checkJudge(page) {
+  const maps = await page.evaluate(() => window.PNEUMACHAOS_REPORT.maps.map((m) => m.sweep));
+  const fills = () => page.$$eval('.cell', (g) => g.map((e) =>
+    [+e.dataset.map, +e.dataset.point, e.querySelector('rect').getAttribute('fill')]));
+  const grey = (f) => { const v = Math.round(255 * (1 - Number(f))); return `rgb(${v},${v},${v})`; };
+  const expect = async (column) => {
+    let differ = 0;
+    const points = maps.map((sweep) => csv(`${sweep}/points.csv`));
+    for (const [k, p, fill] of await fills()) {
+      const want = grey(points[k].find((q) => Number(q.point) === p)[column]);
+      if (fill !== want) { fail(`map ${k} point ${p} under ${column}: ${fill}, want ${want}`); return 0; }
+      differ += grey(points[k].find((q) => Number(q.point) === p).chaos_incidence) !== want;
+    }
+    return differ;
+  };
+  if (!(await page.$('#judge-paper'))) { fail('no choice of judge above the maps'); return; }
+  await page.click('#judge-paper');
+  const changed = await expect('paper_chaos_incidence');
+  await page.click('#judge-strict');
+  await expect('chaos_incidence');
+  console.log(`judge: ${changed} cells shaded otherwise by the paper's indices, as points.csv`);
 }
 
 // The map's runs/FIGURE.js as the page reads it: "POINT:REPEAT" -> traces.

@@ -12,7 +12,8 @@
   // runs.csv columns the panel shows, with their headings; the rest stay in runs.csv.
   const RUN_COLUMNS = [
     ['repeat', 'repeat'], ['seed', 'seed'], ['regime', 'verdict'],
-    ['chaotic', 'chaotic'], ['stick_slip', 'stick-slip'],
+    ['chaotic', 'chaotic'], ['paper_chaotic', 'chaotic by the paper\'s indices'],
+    ['stick_slip', 'stick-slip'],
     ['lambda_per_s', 'exponent [1/s]'], ['lambda_uncertainty_per_s', '± [1/s]'],
     ['zero_one_K', '0–1 K'], ['surrogate_rank', 'surrogate rank'],
   ];
@@ -35,6 +36,19 @@
     return e;
   }
   const pct = (f) => `${Math.round(100 * f)} %`;
+  // Which judge shades the maps: the regime verdict, or the paper's three indices (a spectrum
+  // without a dominant line, an autocorrelation that dies, Wolf's exponent positive) where
+  // every map was judged by them too.
+  const JUDGES = {
+    strict: { key: 'chaos', name: 'the regime verdict' },
+    paper: { key: 'paper_chaos', name: 'the paper\'s three indices' },
+  };
+  let judge = 'strict';
+  const chaosOf = (cell) => cell[JUDGES[judge].key];
+  // "chaos 50 % by the verdict, 100 % by the paper's indices" (the second where judged).
+  const chaosText = (cell) => `chaos ${pct(cell.chaos)} by the verdict` +
+    (cell.paper_chaos === null || cell.paper_chaos === undefined ? ''
+      : `, ${pct(cell.paper_chaos)} by the paper's indices`);
 
   function verdicts(map, cell) {
     const i = map.columns.indexOf('regime');
@@ -45,7 +59,7 @@
   function tooltipText(map, cell) {
     return `${map.axes[0]} = ${cell.x}, ${map.axes[1]} = ${cell.y}\n` +
       `runs: ${cell.runs} (${cell.failed} failed): ${verdicts(map, cell)}\n` +
-      `chaos ${pct(cell.chaos)}, stick-slip ${pct(cell.stick_slip)}` +
+      `${chaosText(cell)}; stick-slip ${pct(cell.stick_slip)}` +
       (cell.inferred ? '\ninferred by the adaptive map' : '');
   }
 
@@ -60,13 +74,10 @@
       const i = map.x.indexOf(cell.x), j = map.y.indexOf(cell.y);
       const g = svg('g', { class: 'cell', 'data-map': index, 'data-point': cell.point,
                            tabindex: 0 });
-      const grey = Math.round(255 * (1 - cell.chaos));
-      g.appendChild(svg('rect', {
+      g.appendChild(paint(svg('rect', {
         x: PAD + i * CELL + 1, y: 4 + (map.y.length - 1 - j) * CELL + 1,
-        width: CELL - 2, height: CELL - 2, fill: `rgb(${grey},${grey},${grey})`,
-        class: (cell.stick_slip >= 0.5 ? 'ss' : '') +
-          (cell.chaos === 0 && !cell.inferred ? ' calm' : ''),
-      }));
+        width: CELL - 2, height: CELL - 2,
+      }), cell));
       if (cell.inferred) {
         g.appendChild(svg('circle', { cx: PAD + (i + 0.5) * CELL,
           cy: 4 + (map.y.length - 0.5 - j) * CELL, r: Math.min(3, CELL / 6), class: 'inferred' }));
@@ -86,6 +97,37 @@
     y.setAttribute('transform', `translate(12 ${4 + CELL * map.y.length / 2}) rotate(-90)`);
     s.appendChild(y);
     return s;
+  }
+  // A cell's square shaded by the chosen judge: white no run chaotic, black all.
+  function paint(rect, cell) {
+    const grey = Math.round(255 * (1 - chaosOf(cell)));
+    rect.setAttribute('fill', `rgb(${grey},${grey},${grey})`);
+    rect.setAttribute('class', (cell.stick_slip >= 0.5 ? 'ss' : '') +
+      (chaosOf(cell) === 0 && !cell.inferred ? ' calm' : ''));
+    return rect;
+  }
+  function repaint() {
+    document.querySelectorAll('.cell').forEach((g) => {
+      const map = data.maps[g.dataset.map];
+      paint(g.querySelector('rect'), map.cells.find((c) => c.point === +g.dataset.point));
+    });
+  }
+  // The judge's choice, offered only when every map was judged by both.
+  function judgeChoice() {
+    const box = el('fieldset', { class: 'judge' });
+    box.appendChild(el('legend', {}, 'Shade chaos by'));
+    Object.entries(JUDGES).forEach(([id, j]) => {
+      const input = el('input', { type: 'radio', name: 'judge', id: `judge-${id}`, value: id });
+      if (id === judge) input.checked = true;
+      input.addEventListener('change', () => {
+        judge = id;
+        repaint();
+      });
+      const l = el('label', { for: `judge-${id}` });
+      l.append(input, ` ${j.name}`);
+      box.appendChild(l);
+    });
+    return box;
   }
   function label(x, y, text, anchor) {
     const t = svg('text', { x, y, 'text-anchor': anchor, class: 'tick' });
@@ -132,7 +174,7 @@
       const a = el('a', { href: `#explore-${m.figure}` }, m.title);
       a.addEventListener('click', () => openCell(k, cell.point));
       tr.appendChild(el('td')).appendChild(a);
-      [pct(c.chaos), pct(c.stick_slip), verdicts(m, c)].forEach((v) =>
+      [chaosText(c), pct(c.stick_slip), verdicts(m, c)].forEach((v) =>
         tr.appendChild(el('td', {}, v)));
       t.appendChild(tr);
     });
@@ -208,8 +250,8 @@
     panel.replaceChildren();
     panel.appendChild(el('h3', {}, `${map.title}: ${map.axes[0]} = ${cell.x}, ` +
       `${map.axes[1]} = ${cell.y} (point ${cell.point})`));
-    panel.appendChild(el('p', {}, `${cell.runs} runs, ${cell.failed} failed; chaos ` +
-      `${pct(cell.chaos)}, stick-slip ${pct(cell.stick_slip)}` + (cell.inferred
+    panel.appendChild(el('p', {}, `${cell.runs} runs, ${cell.failed} failed; ` +
+      `${chaosText(cell)}; stick-slip ${pct(cell.stick_slip)}` + (cell.inferred
       ? '; inferred by the adaptive map from its cell: no run of its own (a command below runs one)'
       : '') + `. All columns: ${map.sweep}/runs.csv ` +
       '(surrogate rank: the maps run no surrogate test).'));
@@ -289,6 +331,8 @@
     if (!root || !data) return;
     const tip = el('div', { id: 'tip', hidden: '' });
     document.body.appendChild(tip);
+    const choice = data.maps.length > 0 && data.maps.every((m) => m.paper_judged);
+    if (choice) root.appendChild(judgeChoice());
     const maps = el('div', { class: 'maps' });
     data.maps.forEach((map, k) => {
       const box = el('div', { class: 'mapbox', id: `explore-${map.figure}` });
@@ -299,7 +343,8 @@
     });
     root.appendChild(maps);
     root.appendChild(el('p', { class: 'legend' },
-      'Grey: share of the cell\'s runs judged chaotic (white none, black all); red border: ' +
+      `Grey: share of the cell's runs judged chaotic by ${choice ? 'the judge chosen above'
+        : JUDGES.strict.name} (white none, black all); red border: ` +
       'stick-slip in at least half of its runs; dashed border: evaluated, no chaos; blue dot: ' +
       'inferred by the adaptive map from its cell. Hover a cell for its runs\' verdicts (the ' +
       'same cell is marked on the other maps); click it (or Enter) for its runs, their ' +
