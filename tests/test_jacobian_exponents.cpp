@@ -122,10 +122,10 @@ TEST(JacobianExponents, BadOptionsAndShortRecordsAreRefused) {
   refused(std::span(x).first(300), o, "at least");
   JacobianOptions few = o;
   few.neighbours = 3;  // an affine fit in 3 coordinates needs 4 points
-  refused(x, few, "cannot fit an affine map");
+  refused(x, few, "jacobian.neighbours = 3: must be 0 (automatic) or >= 4");
   JacobianOptions zero = o;
   zero.delay = 0;
-  refused(x, zero, "dimension and delay");
+  refused(x, zero, "jacobian.delay = 0: must be >= 1");
   // The shortest record accepted gives a value.
   EXPECT_NO_THROW(jacobian_exponents(std::span(x).first(2000), 100.0, o));
 }

@@ -1,5 +1,6 @@
-// Every options struct names the field that is out of range (Ceres's Options::IsValid style):
-// the verdict's thresholds and the fit's settings, checked before any work.
+// Every options struct names the field that is out of range as section.field with its value and
+// range (core/validation.hpp): the verdict's thresholds and the fit's settings, checked before
+// any work.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +8,7 @@
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/identify/fit.hpp"
+#include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/identify/friction_fits.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
@@ -32,16 +34,18 @@ TEST(OptionsValidation, VerdictThresholdsAreNamed) {
   EXPECT_EQ(message_of(VerdictOptions{}), "");
   VerdictOptions o;
   o.zero_one_split = 1.5;
-  EXPECT_NE(message_of(o).find("verdict zero_one_split"), std::string::npos) << message_of(o);
+  EXPECT_NE(message_of(o).find("verdict.zero_one_split = 1.5: must be > 0 and < 1"),
+            std::string::npos)
+      << message_of(o);
   o = VerdictOptions{};
   o.lyapunov_sigmas = NAN;  // a NaN is out of every range
-  EXPECT_NE(message_of(o).find("lyapunov_sigmas"), std::string::npos);
+  EXPECT_NE(message_of(o).find("verdict.lyapunov_sigmas = nan"), std::string::npos);
   o = VerdictOptions{};
   o.min_rest_samples = 0;
-  EXPECT_NE(message_of(o).find("min_rest_samples"), std::string::npos);
+  EXPECT_NE(message_of(o).find("verdict.min_rest_samples = 0: must be >= 1"), std::string::npos);
   o = VerdictOptions{};
   o.repetition.candidates = 0;  // the nested options are checked too
-  EXPECT_NE(message_of(o).find("candidates"), std::string::npos);
+  EXPECT_NE(message_of(o).find("self_repetition.candidates = 0"), std::string::npos);
 }
 
 TEST(OptionsValidation, AnalysisRefusesABadVerdictThresholdBeforeWork) {
@@ -57,13 +61,15 @@ TEST(OptionsValidation, FitSettingsAreNamed) {
   EXPECT_EQ(message_of(identify::FitOptions{}), "");
   identify::FitOptions o;
   o.max_factor = 0.5;
-  EXPECT_NE(message_of(o).find("fit max_factor"), std::string::npos) << message_of(o);
+  EXPECT_NE(message_of(o).find("fit.max_factor = 0.5: must be > 1"), std::string::npos)
+      << message_of(o);
   o = identify::FitOptions{};
   o.first_segment_lengths_s = {0.1, -0.2};
-  EXPECT_NE(message_of(o).find("first_segment_lengths_s"), std::string::npos);
+  EXPECT_NE(message_of(o).find("fit.first_segment_lengths_s = -0.2"), std::string::npos);
   o = identify::FitOptions{};
   o.relative_tolerance = 1e-14;
-  EXPECT_NE(message_of(o).find("relative_tolerance"), std::string::npos);
+  EXPECT_NE(message_of(o).find("fit.relative_tolerance = 1e-14: must be >= 1e-12 and < 1"),
+            std::string::npos);
 }
 
 TEST(OptionsValidation, RecordReadingAndFrictionFitSettingsAreNamed) {
@@ -72,27 +78,27 @@ TEST(OptionsValidation, RecordReadingAndFrictionFitSettingsAreNamed) {
   EXPECT_EQ(message_of(RecordReadOptions{}), "");
   RecordReadOptions r;
   r.ambient_Pa = -1.0;
-  EXPECT_NE(message_of(r).find("record ambient_Pa"), std::string::npos) << message_of(r);
+  EXPECT_NE(message_of(r).find("record.ambient_Pa = -1"), std::string::npos) << message_of(r);
   r = RecordReadOptions{};
   r.stroke_m = 0.0;
-  EXPECT_NE(message_of(r).find("record stroke_m"), std::string::npos);
+  EXPECT_NE(message_of(r).find("record.stroke_m = 0"), std::string::npos);
   EXPECT_EQ(message_of(FrictionFitOptions{}), "");
   FrictionFitOptions f;
   f.models.clear();
-  EXPECT_NE(message_of(f).find("friction fit models"), std::string::npos);
+  EXPECT_NE(message_of(f).find("friction_fit.models"), std::string::npos);
   f = FrictionFitOptions{};
   f.max_iterations = 0;
-  EXPECT_NE(message_of(f).find("max_iterations"), std::string::npos);
+  EXPECT_NE(message_of(f).find("friction_fit.max_iterations = 0: must be >= 1"), std::string::npos);
 }
 
 TEST(OptionsValidation, SeriesReadingAndStabilitySettingsAreNamed) {
   EXPECT_EQ(message_of(CsvSeriesOptions{}), "");
   CsvSeriesOptions c;
   c.time_jitter = 2.0;
-  EXPECT_NE(message_of(c).find("time_jitter"), std::string::npos);
+  EXPECT_NE(message_of(c).find("csv.time_jitter = 2: must be >= 0 and < 1"), std::string::npos);
   c = CsvSeriesOptions{};
   c.column.clear();
-  EXPECT_NE(message_of(c).find("column"), std::string::npos);
+  EXPECT_NE(message_of(c).find("csv.column"), std::string::npos);
   // The reader checks them before it reads a line.
   c = CsvSeriesOptions{};
   c.time_jitter = -1.0;
@@ -100,24 +106,40 @@ TEST(OptionsValidation, SeriesReadingAndStabilitySettingsAreNamed) {
   EXPECT_EQ(message_of(StabilityOptions{}), "");
   StabilityOptions s;
   s.equilibrium.scan_points = 2;  // the nested options are checked too
-  EXPECT_NE(message_of(s).find("scan_points"), std::string::npos);
+  EXPECT_NE(message_of(s).find("equilibrium.scan_points = 2: must be >= 8"), std::string::npos);
 }
 
 TEST(OptionsValidation, AnalysisStagesAndTheReportAreNamed) {
   EXPECT_EQ(message_of(StretchingOptions{}), "");
   StretchingOptions st;
   st.horizon = 0;
-  EXPECT_NE(message_of(st).find("stretching horizon"), std::string::npos);
+  EXPECT_NE(message_of(st).find("stretching.horizon = 0: must be >= 1"), std::string::npos);
   EXPECT_EQ(message_of(PredictionOptions{}), "");
   PredictionOptions p;
   p.neighbours = 0;
-  EXPECT_NE(message_of(p).find("prediction neighbours"), std::string::npos);
+  EXPECT_NE(message_of(p).find("prediction.neighbours = 0: must be >= 1"), std::string::npos);
   const std::vector<double> x(400, 1.0);
   EXPECT_THROW(prediction_errors(x, p), Error);  // checked before the record is read
   EXPECT_EQ(message_of(ReproduceOptions{}), "");
   ReproduceOptions r;
   r.out_dir.clear();
   EXPECT_NE(message_of(r).find("output directory"), std::string::npos);
+}
+
+TEST(OptionsValidation, FrictionEstimateSettingsAreNamed) {
+  identify::EstimateSettings s;
+  s.area_head_m2 = 1e-3;
+  s.area_rod_m2 = 8e-4;
+  s.mass_kg = 1.0;
+  EXPECT_EQ(message_of(s), "");
+  s.mass_kg = 0.0;
+  EXPECT_NE(message_of(s).find("estimate.mass_kg = 0: must be finite and > 0"), std::string::npos)
+      << message_of(s);
+  s.mass_kg = 1.0;
+  s.min_stick_s = NAN;
+  EXPECT_NE(message_of(s).find("estimate.min_stick_s = nan"), std::string::npos);
+  EXPECT_NE(message_of(identify::EstimateSettings{}).find("estimate.area_head_m2 = 0"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -440,19 +440,26 @@ TEST(Sweep, ModelExponentSettingsAreCheckedByName) {
   SweepSpec spec = small_spec();  // 2 s runs
   spec.model_exponent.enabled = true;
   spec.model_exponent.transient_s = 2.0;
-  EXPECT_EQ(validation_error(spec).find("model exponent transient: 2 s: must be >= 0 and shorter"), 0u)
+  EXPECT_EQ(
+      validation_error(spec).find("sweep.model_exponent.transient_s = 2: must be >= 0 and < 2 s"),
+      0u)
       << validation_error(spec);
   spec.model_exponent.transient_s = 1.0;
   spec.model_exponent.measure_s = 0.1;
-  EXPECT_EQ(validation_error(spec).find("model exponent measure: 0.1 s of measurement hold fewer than 10"),
+  EXPECT_EQ(validation_error(spec).find(
+                "sweep.model_exponent.measure_s = 0.1: must be >= 0.2 s (10 renormalisations"),
             0u)
       << validation_error(spec);
   spec.model_exponent.measure_s = -1.0;
-  EXPECT_EQ(validation_error(spec).find("model exponent measure: -1 s: must be a number >= 0"), 0u)
+  EXPECT_EQ(
+      validation_error(spec).find("sweep.model_exponent.measure_s = -1: must be finite and >= 0"),
+      0u)
       << validation_error(spec);
   spec.model_exponent.measure_s = 0.0;
   spec.model_exponent.renormalize_s = 0.0;
-  EXPECT_EQ(validation_error(spec).find("model exponent renormalize: 0 s: must be a positive number"), 0u)
+  EXPECT_EQ(
+      validation_error(spec).find("sweep.model_exponent.renormalize_s = 0: must be finite and > 0"),
+      0u)
       << validation_error(spec);
 }
 

@@ -231,7 +231,8 @@ TEST(Transducer, BadKeysAreRefusedNamingTheKey) {
     return error_of([&] { build_scenario("", sets); });
   };
   EXPECT_NE(refused({"transducer.velocity_bits=12"})
-                .find("transducer.velocity_range_mm_per_s: a 12-bit converter"),
+                .find("transducer.velocity_range_mm_per_s = 0: must be > 0 when "
+                      "transducer.velocity_bits = 12"),
             std::string::npos);
   EXPECT_NE(refused({"transducer.pressure_bits=12"}).find("transducer.pressure_range_MPa"),
             std::string::npos);
@@ -257,11 +258,11 @@ TEST(Transducer, ScenariosBuiltInCodeAreCheckedToo) {
   };
   EXPECT_NE(refused([](Scenario& s) {
               s.transducer.pressure.bits = 30;
-            }).find("transducer.pressure_bits: 30 is out of range"),
+            }).find("transducer.pressure_bits = 30: must be between 0 and 24"),
             std::string::npos);
   EXPECT_NE(refused([](Scenario& s) {
               s.transducer.velocity.noise_m_per_s = -1e-3;
-            }).find("transducer.velocity_noise_mm_per_s: -1 mm/s"),
+            }).find("transducer.velocity_noise_mm_per_s = -1: must be finite and >= 0"),
             std::string::npos);
   EXPECT_NE(refused([](Scenario& s) {
               s.transducer.pressure.range_Pa = NAN;

@@ -204,7 +204,7 @@ def test_new_arguments_are_refused_by_name():
         pc.model_lyapunov(tolerance_factor=0)
     with pytest.raises(ValueError, match=r"^until_stroke_end: expected True or False"):
         pc.model_lyapunov(until_stroke_end="no")
-    with pytest.raises(ValueError, match=r"^measure_s: "):
+    with pytest.raises(ValueError, match=r"^measure_s = -1: must be "):
         pc.model_lyapunov(measure_s=-1.0)
     with pytest.raises(ValueError, match=r"^position_mm: 1000000 mm is not a piston position"):
         pc.stability(position_mm=1e6)

@@ -9,6 +9,7 @@
 #include "analysis/series_statistics.hpp"
 #include "exponent_spread.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "seed_agreement.hpp"
 
 namespace pneumachaos {
@@ -121,11 +122,10 @@ void AnalysisOptions::validate() const {
   zero_one.validate();
   surrogates.validate();
   verdict.validate();
-  if (verdict_seeds < 1 || verdict_seeds > kMaxVerdictSeeds || verdict_seeds % 2 == 0) {
-    throw Error(kVerdictSeedsField,
-                fmt::format("must be odd, from 1 to {} (a majority must exist), got {}",
-                            kMaxVerdictSeeds, verdict_seeds));
-  }
+  validation::require(
+      verdict_seeds >= 1 && verdict_seeds <= kMaxVerdictSeeds && verdict_seeds % 2 == 1,
+      kVerdictSeedsField, static_cast<double>(verdict_seeds),
+      fmt::format("odd, from 1 to {} (a majority must exist)", kMaxVerdictSeeds));
 }
 
 namespace {

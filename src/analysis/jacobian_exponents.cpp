@@ -10,6 +10,7 @@
 
 #include "analysis/delay_embedding.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -204,16 +205,15 @@ double median(std::vector<double> v) {
 }  // namespace
 
 void JacobianOptions::validate(std::size_t n) const {
-  if (dimension == 0 || delay == 0) throw Error("jacobian", "dimension and delay must be >= 1");
-  if (neighbours != 0 && neighbours < dimension + 1) {
-    throw Error("jacobian", fmt::format("{} neighbours cannot fit an affine map in {} "
-                                        "coordinates: at least {} are needed",
-                                        neighbours, dimension, dimension + 1));
-  }
-  if (batches < 2) throw Error("jacobian", "batches must be >= 2");
-  if (!(max_unexplained > 0.0 && max_unexplained <= 1.0)) {
-    throw Error("jacobian", "max_unexplained must be in (0, 1]");
-  }
+  using namespace validation;
+  require_ge(field("jacobian.dimension"), static_cast<double>(dimension), 1);
+  require_ge(field("jacobian.delay"), static_cast<double>(delay), 1);
+  require(neighbours == 0 || neighbours >= dimension + 1, field("jacobian.neighbours"),
+          static_cast<double>(neighbours),
+          fmt::format("0 (automatic) or >= {} (an affine map in {} coordinates)", dimension + 1,
+                      dimension));
+  require_ge(field("jacobian.batches"), static_cast<double>(batches), 2);
+  require_gt_le(field("jacobian.max_unexplained"), max_unexplained, 0, 1);
   const std::size_t points = fitted_points(n, *this), evolve = evolve_of(*this);
   const std::size_t maps = points == 0 ? 0 : (points - 1) / evolve + 1;
   const std::size_t needed = std::max(kMinExponentSamples, neighbours_of(*this) + 2 * theiler + 1);

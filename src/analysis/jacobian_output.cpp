@@ -5,13 +5,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "divergence_uncertainty.hpp"
 #include "io/json_quantity.hpp"
 
 namespace pneumachaos {
 namespace {
 
-// A two-sided 95 % interval of a normal error is +-1.96 of its standard error.
-constexpr double kNormal95 = 1.96;
+using detail::kNormal95;  // +-1.96 standard errors: a two-sided 95 % interval
 
 std::string spectrum_text(const JacobianResult& j) {
   std::string s;

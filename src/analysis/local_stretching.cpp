@@ -7,6 +7,7 @@
 
 #include "analysis/delay_embedding.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -27,8 +28,8 @@ std::size_t band_of(double value, const std::vector<double>& edges) {
   return static_cast<std::size_t>(it - edges.begin()) - 1;
 }
 
-void check(std::span<const double> x, const std::vector<double>& edges,
-           const StretchingOptions& o) {
+void check_inputs(std::span<const double> x, const std::vector<double>& edges,
+                  const StretchingOptions& o) {
   if (edges.size() < 2 || !std::is_sorted(edges.begin(), edges.end()) ||
       std::adjacent_find(edges.begin(), edges.end()) != edges.end())
     throw Error("band edges", "at least two strictly increasing values are needed");
@@ -43,16 +44,17 @@ void check(std::span<const double> x, const std::vector<double>& edges,
 }  // namespace
 
 void StretchingOptions::validate() const {
-  if (dimension == 0) throw Error("stretching dimension", "must be at least 1");
-  if (delay == 0) throw Error("stretching delay", "must be at least 1");
-  if (horizon == 0) throw Error("stretching horizon", "must be at least 1 step");
-  if (stride == 0) throw Error("stretching stride", "must be at least 1");
+  using namespace validation;
+  require_ge(field("stretching.dimension"), static_cast<double>(dimension), 1);
+  require_ge(field("stretching.delay"), static_cast<double>(delay), 1);
+  require_ge(field("stretching.horizon"), static_cast<double>(horizon), 1, "steps");
+  require_ge(field("stretching.stride"), static_cast<double>(stride), 1);
 }
 
 std::vector<BandStretching> band_stretching(std::span<const double> x, double rate_Hz,
                                             const std::vector<double>& edges,
                                             const StretchingOptions& o) {
-  check(x, edges, o);
+  check_inputs(x, edges, o);
   const DelayEmbedding embedding(x, o.dimension, o.delay);
   // Only vectors that can still be followed for `horizon` steps are indexed, so every
   // neighbour found has a future to compare with.

@@ -14,6 +14,7 @@
 #include "pair_distances.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -45,16 +46,17 @@ constexpr std::size_t kMinSpacingsToTrim = 4;
 }  // namespace
 
 void DivergenceOptions::validate(std::size_t n) const {
-  if (dimension == 0 || delay == 0) throw Error("lyapunov", "dimension and delay must be >= 1");
+  using namespace validation;
+  require_ge(field("lyapunov.dimension"), static_cast<double>(dimension), 1);
+  require_ge(field("lyapunov.delay"), static_cast<double>(delay), 1);
   if (n < kMinExponentSamples) {
     throw Error("lyapunov",
                 fmt::format("{} samples: at least {} are needed", n, kMinExponentSamples));
   }
-  if (!(slope_tolerance > 0.0)) throw Error("lyapunov.slope_tolerance", "must be positive");
-  if (jackknife_blocks < 2) throw Error("lyapunov.jackknife_blocks", "must be at least 2");
-  if (segments < 2 || segments > jackknife_blocks) {
-    throw Error("lyapunov.segments", "must be between 2 and jackknife_blocks");
-  }
+  require_gt(field("lyapunov.slope_tolerance"), slope_tolerance, 0);
+  require_ge(field("lyapunov.jackknife_blocks"), static_cast<double>(jackknife_blocks), 2);
+  require_between(field("lyapunov.segments"), static_cast<double>(segments), 2,
+                  static_cast<double>(jackknife_blocks), "jackknife_blocks at most");
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include "analysis/delay_embedding.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -46,13 +47,16 @@ constexpr std::size_t kCandidates = 40;
 }  // namespace
 
 void WolfOptions::validate(std::size_t n) const {
-  if (dimension == 0 || delay == 0) throw Error("wolf", "dimension and delay must be >= 1");
+  using namespace validation;
+  require_ge(field("wolf.dimension"), static_cast<double>(dimension), 1);
+  require_ge(field("wolf.delay"), static_cast<double>(delay), 1);
   if (n < kMinExponentSamples) {
     throw Error("wolf", fmt::format("{} samples: at least {} are needed", n, kMinExponentSamples));
   }
-  if (max_scale < 0.0 || candidate_scale < 0.0 || min_scale < 0.0 || !(scale_factor > 0.0)) {
-    throw Error("wolf", "scales must be non-negative and scale_factor positive");
-  }
+  require_ge(field("wolf.max_scale"), max_scale, 0);
+  require_ge(field("wolf.candidate_scale"), candidate_scale, 0);
+  require_ge(field("wolf.min_scale"), min_scale, 0);
+  require_gt(field("wolf.scale_factor"), scale_factor, 0);
 }
 
 namespace {

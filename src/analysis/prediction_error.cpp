@@ -8,6 +8,7 @@
 
 #include "analysis/delay_embedding.hpp"
 #include "analysis/series_statistics.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {
@@ -85,10 +86,11 @@ double nonlinear_prediction_error(std::span<const double> x, const PredictionOpt
 }
 
 void PredictionOptions::validate() const {
-  if (dimension == 0) throw Error("prediction dimension", "must be at least 1");
-  if (delay == 0) throw Error("prediction delay", "must be at least 1");
-  if (neighbours == 0) throw Error("prediction neighbours", "must be at least 1");
-  if (max_references == 0) throw Error("prediction max_references", "must be at least 1");
+  using namespace validation;
+  require_ge(field("prediction.dimension"), static_cast<double>(dimension), 1);
+  require_ge(field("prediction.delay"), static_cast<double>(delay), 1);
+  require_ge(field("prediction.neighbours"), static_cast<double>(neighbours), 1);
+  require_ge(field("prediction.max_references"), static_cast<double>(max_references), 1);
 }
 
 PredictionErrors prediction_errors(std::span<const double> x, const PredictionOptions& o) {

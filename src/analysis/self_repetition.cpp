@@ -10,6 +10,7 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -155,20 +156,13 @@ Stretch longest_stretch(std::span<const double> x, std::size_t L0, std::size_t w
 }  // namespace
 
 void SelfRepetitionOptions::validate() const {
-  const auto bad = [](const char* key, const std::string& why) {
-    throw Error(std::string("self-repetition ") + key, why);
-  };
-  if (!(max_mismatch > 0.0)) bad("max_mismatch", fmt::format("{}: must be > 0", max_mismatch));
-  if (!(min_share > 0.0 && min_share < 1.0)) {
-    bad("min_share", fmt::format("{}: must lie between 0 and 1", min_share));
-  }
-  if (!(min_lag_periods > 0.0)) {
-    bad("min_lag_periods", fmt::format("{}: must be > 0", min_lag_periods));
-  }
-  if (candidates == 0) bad("candidates", "0: at least 1 lag must be examined");
-  if (!(lag_drift >= 0.0 && lag_drift <= 0.5)) {
-    bad("lag_drift", fmt::format("{}: must lie between 0 and 0.5", lag_drift));
-  }
+  using namespace validation;
+  require_gt(field("self_repetition.max_mismatch"), max_mismatch, 0);
+  require_gt_lt(field("self_repetition.min_share"), min_share, 0, 1);
+  require_gt(field("self_repetition.min_lag_periods"), min_lag_periods, 0);
+  require_ge(field("self_repetition.candidates"), static_cast<double>(candidates), 1,
+             "at least one lag must be examined");
+  require_between(field("self_repetition.lag_drift"), lag_drift, 0, 0.5);
 }
 
 SelfRepetition self_repetition(std::span<const double> x, double rate_Hz, double period_samples,

@@ -9,6 +9,7 @@
 
 #include "analysis/fft.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -40,16 +41,15 @@ std::size_t welch_segment_length(std::size_t n_samples, const SpectrumOptions& o
 }
 
 void SpectrumOptions::validate(std::size_t n_samples) const {
+  using namespace validation;
   const std::size_t L = segment_length == 0 ? default_segment(n_samples) : segment_length;
-  if (L < kShortestSegment) {
-    throw Error("spectrum.segment_length",
-                fmt::format("must be at least {} samples", kShortestSegment));
-  }
+  require_ge(field("spectrum.segment_length"), static_cast<double>(L),
+             static_cast<double>(kShortestSegment), "samples");
   if (n_samples < L) {
     throw Error("spectrum",
                 fmt::format("{} samples is shorter than one segment of {}", n_samples, L));
   }
-  if (!(overlap >= 0.0 && overlap < 1.0)) throw Error("spectrum.overlap", "must lie in [0, 1)");
+  require_ge_lt(field("spectrum.overlap"), overlap, 0, 1);
 }
 
 Spectrum welch_spectrum(std::span<const double> x, double rate_Hz, const SpectrumOptions& o) {

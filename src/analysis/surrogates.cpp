@@ -13,6 +13,7 @@
 #include "analysis/fft.hpp"
 #include "core/parallel_indices.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -101,11 +102,10 @@ void check_surrogate_count(std::size_t count, const std::string& where) {
 }
 
 void SurrogateOptions::validate() const {
+  using namespace validation;
   check_surrogate_count(count, "surrogates.count");
-  if (max_iterations == 0) throw Error("surrogates.max_iterations", "must be at least 1");
-  if (!(spectral_tolerance >= 0.0)) {
-    throw Error("surrogates.spectral_tolerance", "must be a number >= 0");
-  }
+  require_ge(field("surrogates.max_iterations"), static_cast<double>(max_iterations), 1);
+  require_ge(field("surrogates.spectral_tolerance"), spectral_tolerance, 0);
 }
 
 std::vector<double> iaaft_surrogate(std::span<const double> x, std::uint64_t seed,

@@ -11,6 +11,7 @@
 
 #include "analysis/fft.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -119,11 +120,12 @@ double quantile(std::vector<double> v, double q) {
 }  // namespace
 
 void ZeroOneOptions::validate() const {
-  if (frequencies == 0) throw Error("zero_one.frequencies", "must be at least 1");
-  if (min_points < kFewestPoints) {
-    throw Error("zero_one.min_points", fmt::format("must be at least {}", kFewestPoints));
-  }
-  if (max_points < min_points) throw Error("zero_one.max_points", "must be >= min_points");
+  using namespace validation;
+  require_ge(field("zero_one.frequencies"), static_cast<double>(frequencies), 1);
+  require_ge(field("zero_one.min_points"), static_cast<double>(min_points),
+             static_cast<double>(kFewestPoints));
+  require_ge(field("zero_one.max_points"), static_cast<double>(max_points),
+             static_cast<double>(min_points), "min_points");
 }
 
 ZeroOneResult zero_one_test(std::span<const double> x, std::size_t step,

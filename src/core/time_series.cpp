@@ -65,14 +65,14 @@ TimeSeries time_window(const TimeSeries& series, std::optional<double> from_s,
   const std::size_t n = series.size();
   const double first = series.start_s();
   const double last = n == 0 ? first : series.time_s(n - 1);
-  const auto check = [&](std::optional<double> t, ErrorField name) {
+  const auto check_inside = [&](std::optional<double> t, ErrorField name) {
     if (!t) return;
     if (!std::isfinite(*t) || *t < first || *t > last)
       throw Error(name, fmt::format("{} s lies outside the record, which spans {:.6g} to {:.6g} s",
                                     *t, first, last));
   };
-  check(from_s, kWindowFromField);
-  check(to_s, kWindowToField);
+  check_inside(from_s, kWindowFromField);
+  check_inside(to_s, kWindowToField);
   // A bound typed as a sample's time selects that sample, whatever its rounding.
   constexpr double kSlack = 1e-6;  // of a sample
   const double rate = series.rate_Hz();

@@ -9,6 +9,7 @@
 
 #include "friction_steps.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos::identify {
 
@@ -170,6 +171,21 @@ void set_smoothing_window(EstimateSettings& settings, long long window, const st
   settings.sg_half_width = static_cast<std::size_t>(window / 2);
 }
 
+void EstimateSettings::validate() const {
+  using namespace validation;
+  require_finite_gt(field("estimate.area_head_m2"), area_head_m2, 0, "A1");
+  require_finite_gt(field("estimate.area_rod_m2"), area_rod_m2, 0, "A2");
+  require_finite_gt(field("estimate.mass_kg"), mass_kg, 0, "the moving mass");
+  require_finite_gt(field("estimate.ambient_Pa"), ambient_Pa, 0, "Pa abs");
+  require_finite(field("estimate.external_force_N"), external_force_N);
+  if (stick_threshold_m_per_s) {
+    require_finite_ge(field("estimate.stick_threshold_m_per_s"), *stick_threshold_m_per_s, 0,
+                      "when set");
+  }
+  require_finite_ge(field("estimate.min_stick_s"), min_stick_s, 0);
+  require_ge(field("estimate.curve_bins"), static_cast<double>(curve_bins), 1);
+}
+
 EstimateSettings estimate_settings_from(const Scenario& s) {
   EstimateSettings e;
   e.area_head_m2 = s.cylinder.area_head_m2();
@@ -187,8 +203,7 @@ std::size_t FrictionEstimate::sliding_count() const {
 
 FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettings& s) {
   check_measured_record(r, 20);
-  if (!(s.area_head_m2 > 0.0) || !(s.area_rod_m2 > 0.0) || !(s.mass_kg > 0.0))
-    throw Error(r.source, "the friction estimate needs positive areas A1, A2 and a moving mass");
+  s.validate();
   FrictionEstimate e;
   e.t_s = r.t_s;
   e.v_m_per_s = r.v_m_per_s;

@@ -16,6 +16,7 @@
 #include "io/csv_fields.hpp"
 #include "io/csv_text.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/io/column_units.hpp"
 
 namespace pneumachaos {
@@ -338,11 +339,9 @@ TimeSeries parse_csv_series(const std::string& text, const std::string& origin,
 }
 
 void CsvSeriesOptions::validate() const {
-  if (column.empty()) throw Error("column", "expected a column's name or number");
-  if (rate_Hz && !(std::isfinite(*rate_Hz) && *rate_Hz > 0.0))
-    throw Error(kRateField, fmt::format("must be a positive number of Hz, got {}", *rate_Hz));
-  if (!(time_jitter >= 0.0 && time_jitter < 1.0))
-    throw Error("time_jitter", fmt::format("{}: must be >= 0 and < 1", time_jitter));
+  if (column.empty()) throw Error("csv.column", "expected a column's name or number");
+  if (rate_Hz) validation::require_finite_gt(kRateField, *rate_Hz, 0, "Hz");
+  validation::require_ge_lt(validation::field("csv.time_jitter"), time_jitter, 0, 1);
 }
 
 TimeSeries read_csv_series(const std::string& path, const CsvSeriesOptions& options) {

@@ -129,7 +129,8 @@ void validate_scenario(const Scenario& scenario, const SettingOrigins& origins) 
   try {
     scenario.validate();
   } catch (const Error& e) {
-    const auto it = origins.find(e.where());
+    // A field's error (core/validation.hpp) is found by its id; where() adds its value.
+    const auto it = origins.find(e.field().empty() ? e.where() : e.field());
     if (it == origins.end()) throw;
     // Overrides are recorded under the field's label (apply_overrides).
     if (it->second == kOverrideField.label) {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "steppers.hpp"
 
 namespace pneumachaos {
@@ -287,23 +288,15 @@ IntegrationSummary run(const HybridSystem& system, State& x, Mode& mode, const I
 }  // namespace
 
 void IntegratorOptions::validate() const {
-  // `name`: a field (the tolerances, which the lyapunov command scales by a flag) or a name.
-  const auto positive = [](double v, const auto& name) {
-    if (!(std::isfinite(v) && v > 0.0)) {
-      throw Error(name, fmt::format("must be a positive finite number, got {}", v));
-    }
-  };
-  if (!(std::isfinite(t_end_s) && std::isfinite(t_start_s) && t_end_s > t_start_s)) {
-    throw Error("t_end_s",
-                fmt::format("must be finite and after t_start_s = {}, got {}", t_start_s, t_end_s));
-  }
-  positive(relative_tolerance, kRelativeToleranceField);
-  positive(absolute_tolerance, kAbsoluteToleranceField);
-  positive(max_step_s, "max_step_s");
-  positive(initial_step_s, "initial_step_s");
-  if (!(std::isfinite(sample_rate_Hz) && sample_rate_Hz >= 0.0)) {
-    throw Error("sample_rate_Hz", fmt::format("must be >= 0, got {}", sample_rate_Hz));
-  }
+  using namespace validation;
+  require_finite(field("integrator.t_start_s"), t_start_s);
+  require_finite_gt(field("integrator.t_end_s"), t_end_s, t_start_s, "after t_start_s");
+  // The tolerances carry their fields: the lyapunov command scales them by a flag.
+  require_finite_gt(kRelativeToleranceField, relative_tolerance, 0);
+  require_finite_gt(kAbsoluteToleranceField, absolute_tolerance, 0);
+  require_finite_gt(field("integrator.max_step_s"), max_step_s, 0);
+  require_finite_gt(field("integrator.initial_step_s"), initial_step_s, 0);
+  require_finite_ge(field("integrator.sample_rate_Hz"), sample_rate_Hz, 0, "0: no samples");
 }
 
 const char* termination_name(Termination t) {

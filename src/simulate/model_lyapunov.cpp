@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
@@ -180,30 +181,25 @@ class TwoTrajectories {
 }  // namespace
 
 void ModelLyapunovOptions::validate() const {
-  const auto positive = [](double v, ErrorField field) {
-    if (!(std::isfinite(v) && v > 0.0)) throw Error(field, "must be a positive number");
-  };
-  positive(measure_s, kMeasureField);
-  positive(renormalize_s, kRenormalizeField);
-  positive(separation, kSeparationField);
-  if (!(std::isfinite(transient_s) && transient_s >= 0.0))
-    throw Error(kTransientField, "must be a number >= 0");
-  if (blocks < 2) throw Error(kBlocksField, "must be at least 2");
+  using namespace validation;
+  require_finite_gt(kMeasureField, measure_s, 0, "s");
+  require_finite_gt(kRenormalizeField, renormalize_s, 0, "s");
+  require_finite_gt(kSeparationField, separation, 0);
+  require_finite_ge(kTransientField, transient_s, 0, "s");
+  require_ge(kBlocksField, static_cast<double>(blocks), 2);
   // The uncertainty is the spread between blocks: each block needs a renormalisation.
-  if (measure_s < renormalize_s * static_cast<double>(blocks)) {
-    throw Error(kMeasureField,
-                fmt::format("{} s holds fewer than {} renormalisation intervals of {} s; the "
-                            "exponent and its uncertainty need at least that many",
-                            measure_s, blocks, renormalize_s));
-  }
+  const double fewest_s = renormalize_s * static_cast<double>(blocks);
+  require(!(measure_s < fewest_s), kMeasureField, measure_s,
+          fmt::format(">= {} s ({} renormalisation intervals of {} s, as many as the exponent "
+                      "and its uncertainty need)",
+                      fewest_s, blocks, renormalize_s));
   // Every interval is a restart of two integrations and a stored running value: bound it.
   constexpr double kMaxIntervals = 1e7;
-  if ((transient_s + measure_s) / renormalize_s > kMaxIntervals) {
-    throw Error(kRenormalizeField,
-                fmt::format("{} s over {} s is more than {:g} renormalisations; use a longer "
-                            "interval (the default 0.02 s is far shorter than the motion)",
-                            renormalize_s, transient_s + measure_s, kMaxIntervals));
-  }
+  const double run_s = transient_s + measure_s;
+  require(!(run_s / renormalize_s > kMaxIntervals), kRenormalizeField, renormalize_s,
+          fmt::format(">= {} s (the run's {} s in at most {:g} renormalisations; the default "
+                      "0.02 s is far shorter than the motion)",
+                      run_s / kMaxIntervals, run_s, kMaxIntervals));
 }
 
 ModelLyapunovResult model_lyapunov(const HybridSystem& system, const std::vector<double>& x0,

@@ -11,9 +11,13 @@
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 
 namespace pneumachaos {
 namespace {
+
+// Fewest rod-side pressures scanned: a coarser scan can step over a Stribeck curve's roots.
+constexpr int kFewestScanPoints = 8;
 
 template <typename F>
 double root(F&& f, double lo, double hi) {
@@ -247,7 +251,8 @@ std::string no_equilibrium_reason(const Plant& plant, SteadyMotion& creeping, do
 }  // namespace
 
 void EquilibriumOptions::validate() const {
-  if (scan_points < 8) throw Error("scan_points", "must be at least 8");
+  validation::require_ge(validation::field("equilibrium.scan_points"), scan_points,
+                         kFewestScanPoints);
 }
 
 EquilibriumResult find_equilibria(const Plant& plant, const EquilibriumOptions& options) {

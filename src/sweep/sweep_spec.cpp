@@ -5,6 +5,7 @@
 
 #include "pneumachaos/analysis/surrogates.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
@@ -42,44 +43,47 @@ std::vector<std::string> SweepSpec::warnings() const {
 
 void ModelExponentSpec::validate(double duration_s) const {
   if (!enabled) return;
-  if (!(std::isfinite(transient_s) && transient_s >= 0.0 && transient_s < duration_s)) {
-    throw Error(
-        kTransientField,
-        fmt::format("{} s: must be >= 0 and shorter than the run ({} s)", transient_s, duration_s));
-  }
-  if (!(std::isfinite(measure_s) && measure_s >= 0.0)) {
-    throw Error(kMeasureField,
-                fmt::format("{} s: must be a number >= 0 (0: the rest of the run)", measure_s));
-  }
-  if (!(std::isfinite(renormalize_s) && renormalize_s > 0.0)) {
-    throw Error(kRenormalizeField,
-                fmt::format("{} s: must be a positive number", renormalize_s));
-  }
+  using namespace validation;
+  require(std::isfinite(transient_s) && transient_s >= 0.0 && transient_s < duration_s,
+          kTransientField, transient_s,
+          fmt::format(">= 0 and < {} s (shorter than the run)", duration_s));
+  require_finite_ge(kMeasureField, measure_s, 0, "s; 0: the rest of the run");
+  require_finite_gt(kRenormalizeField, renormalize_s, 0, "s");
   const ModelLyapunovOptions o = options(duration_s);
   // The uncertainty is the spread between blocks: each needs at least one renormalisation.
-  if (o.measure_s < o.renormalize_s * static_cast<double>(o.blocks)) {
-    throw Error(measure_s > 0.0 ? kMeasureField : kTransientField,
-                fmt::format("{} s of measurement hold fewer than {} renormalisations of {} s",
-                            o.measure_s, o.blocks, o.renormalize_s));
+  const double fewest_s = o.renormalize_s * static_cast<double>(o.blocks);
+  if (o.measure_s < fewest_s) {
+    if (measure_s > 0.0) {
+      require(false, kMeasureField, measure_s,
+              fmt::format(">= {} s ({} renormalisations of {} s, one per block)", fewest_s,
+                          o.blocks, o.renormalize_s));
+    }
+    require(false, kTransientField, transient_s,
+            fmt::format("<= {} s (the rest of the run must hold {} renormalisations of {} s, "
+                        "one per block)",
+                        duration_s - fewest_s, o.blocks, o.renormalize_s));
   }
   o.validate();
 }
 
 void SweepSpec::validate() const {
   validate_grid(axes);
-  if (repeats == 0) throw Error(kRepeatsField, "must be at least 1");
+  validation::require_ge(kRepeatsField, static_cast<double>(repeats), 1);
   if (runs() > 10'000'000)
     throw Error(kGridField, fmt::format("{} runs is more than 10 million", runs()));
   base.validate();
   check_surrogate_count(surrogates, "surrogates");  // up front, not as every run's failure
   model_exponent.validate(base.run.duration_s);
-  if (!adaptive.enabled) return;
-  if (axes.size() != 2) {
-    throw Error(
-        AdaptiveSpec::kEnabledField,
-        fmt::format("refines a map over exactly two grid axes; this sweep has {}", axes.size()));
+  adaptive.validate(axes.size());
+}
+
+void AdaptiveSpec::validate(std::size_t axes) const {
+  if (!enabled) return;
+  if (axes != 2) {
+    throw Error(kEnabledField,
+                fmt::format("refines a map over exactly two grid axes; this sweep has {}", axes));
   }
-  if (adaptive.coarse_step == 0) throw Error(AdaptiveSpec::kCoarseStepField, "must be at least 1");
+  validation::require_ge(kCoarseStepField, static_cast<double>(coarse_step), 1);
 }
 
 std::string SweepSpec::fingerprint() const {

@@ -31,6 +31,10 @@ struct EstimateSettings {
   /// instead of the equation of motion; sticks, curve and loops are then computed on it.
   std::optional<std::vector<double>> force_N;
   std::size_t curve_bins = 16;  ///< bins of the steady curve per direction of motion
+  /// Throws Error naming the first field out of its range (core/validation.hpp): positive
+  /// areas, mass and ambient pressure, a finite external force, a set stick threshold >= 0,
+  /// min_stick_s >= 0 and curve_bins >= 1 (a half-width of 0 is taken as 1).
+  void validate() const;
 };
 
 /// From a scenario: A1, A2 from cylinder.bore_mm/rod_mm, ambient.pressure_kPa,

@@ -50,6 +50,9 @@ struct AdaptiveSpec {
   bool follow_motion = false;
   static constexpr ErrorField kEnabledField{"sweep.adaptive", "adaptive"};
   static constexpr ErrorField kCoarseStepField{"sweep.adaptive.coarse_step", "adaptive step"};
+  /// When enabled: throws Error naming the field unless the map has exactly two axes and
+  /// coarse_step >= 1.
+  void validate(std::size_t axes) const;
 };
 
 struct SweepSpec {
