@@ -8,7 +8,7 @@
 // Run: cmake --preset bench && cmake --build --preset bench && ./build/bench/bench_simulate
 #include <benchmark/benchmark.h>
 
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 
 namespace pneumachaos {
 namespace {

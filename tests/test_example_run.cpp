@@ -1,9 +1,9 @@
-// The report's Fig. 7 example run (src/report/example_run.hpp): one record of the rig, with
+// The paper's Fig. 7 example run (pneumachaos/claims/example_run.hpp): one record of the rig, with
 // the seal's random level when the scenario has one, without the maps' scatter and texture.
 #include <gtest/gtest.h>
 
 #include "pneumachaos/model/scenario_toml.hpp"
-#include "report/example_run.hpp"
+#include "pneumachaos/claims/example_run.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -1,9 +1,9 @@
-// The report's section "What could explain the paper's chaos" (src/report/explanations.hpp).
+// The report's section "What could explain the paper's chaos" (pneumachaos/claims/explanations.hpp).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "report/explanations.hpp"
+#include "pneumachaos/claims/explanations.hpp"
 
 namespace pneumachaos {
 namespace {

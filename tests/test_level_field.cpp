@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "model/level_field.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"

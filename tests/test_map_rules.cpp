@@ -2,7 +2,7 @@
 // chaos" tolerance and the sign rule, with misreadings of the paper shown failing.
 #include <gtest/gtest.h>
 
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 
 namespace pneumachaos {
 namespace {

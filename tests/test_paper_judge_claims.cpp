@@ -8,7 +8,7 @@
 
 #include "claim_test_maps.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 namespace pneumachaos {
 namespace {

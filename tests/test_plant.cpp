@@ -7,7 +7,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "variant_scenarios.hpp"
 #include "stuck_samples.hpp"
 #include "tight_options.hpp"

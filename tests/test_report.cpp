@@ -13,7 +13,7 @@
 
 #include "claim_test_maps.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 #include "report/figures.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/stability/stability_map.hpp"

@@ -5,7 +5,7 @@
 
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "error_text.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/simulate/measured_channels.hpp"

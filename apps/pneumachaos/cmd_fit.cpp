@@ -13,7 +13,7 @@
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "pneumachaos/report/figure.hpp"
+#include "pneumachaos/plot/figure.hpp"
 
 namespace pneumachaos::cli {
 namespace {

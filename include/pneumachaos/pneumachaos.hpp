@@ -1,8 +1,8 @@
 #pragma once
 // The public C++ API in one include: scenarios and the plant, simulation and the model's own
 // exponent, the steady motion's stability, the chaos analysis of a record, measured records
-// and fits, S1 x S2 sweeps, the paper's report and calibration (docs/guide/cpp.md), and the
-// writers of every result file the command line produces. The installed headers are exactly
+// and fits, S1 x S2 sweeps, the paper's claims, the report and calibration (docs/guide/cpp.md),
+// and the writers of every result file the command line produces. The installed headers are exactly
 // these and the ones they include; the implementation's own headers stay in src/
 // (docs/architecture.md, "Public and internal headers").
 
@@ -10,6 +10,8 @@
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/regime.hpp"
 #include "pneumachaos/calibrate/calibrate.hpp"
+#include "pneumachaos/claims/example_run.hpp"
+#include "pneumachaos/claims/explanations.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/time_series.hpp"
 #include "pneumachaos/identify/fit.hpp"
@@ -26,6 +28,7 @@
 #include "pneumachaos/model/scenario.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/model/scenario_toml.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/simulate/lyapunov_output.hpp"
 #include "pneumachaos/simulate/measured_channels.hpp"

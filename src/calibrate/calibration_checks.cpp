@@ -7,7 +7,7 @@
 #include "pneumachaos/calibrate/calibration_spec.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -10,7 +10,7 @@
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "pneumachaos/report/figure.hpp"
+#include "pneumachaos/plot/figure.hpp"
 
 namespace pneumachaos::detail {
 namespace {

@@ -14,7 +14,7 @@
 #include "claim_requirements.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "report/example_run.hpp"
+#include "pneumachaos/claims/example_run.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A claim agrees where its margin is >= 0 (the report's rule, include/pneumachaos/report/claims.hpp).
+// A claim agrees where its margin is >= 0 (the rule of include/pneumachaos/claims/claims.hpp).
 bool agrees(double margin) { return margin >= 0.0; }
 
 bool judged_anything(const std::vector<double>& terms) {

@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kExample = "example";
 constexpr const char* kUnsupported = "unsupported";
 
-// The inputs each claim reads (src/report/claims.cpp and claims_example.cpp): its rule is
+// The inputs each claim reads (src/claims/claims.cpp and claims_example.cpp): its rule is
 // not evaluated without them.
 const std::map<std::string, std::vector<std::string>>& requirements() {
   static const std::map<std::string, std::vector<std::string>> table = {

@@ -1,5 +1,5 @@
 #pragma once
-// Which conditions each claim of the report needs (private to the calibrate module): a spec
+// Which conditions each claim (the claims module) needs (private to the calibrate module): a spec
 // that asks for a claim its conditions cannot score is refused before any run.
 
 #include <string>

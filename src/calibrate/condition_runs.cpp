@@ -3,7 +3,7 @@
 #include "sweep/distribution.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
-#include "report/example_run.hpp"
+#include "pneumachaos/claims/example_run.hpp"
 #include "pneumachaos/sweep/sweep_runner.hpp"
 
 namespace pneumachaos::detail {

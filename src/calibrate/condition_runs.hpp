@@ -1,12 +1,12 @@
 #pragma once
 // Running a set of conditions on one scenario (private to the calibrate module): each map a
 // resumable sweep on the sweep engine's threads and MPI ranks (as reproduce runs its maps),
-// the example one record; together the inputs the report's claims read.
+// the example one record; together the inputs the claims module's claims read.
 
 #include <string>
 
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos::detail {

@@ -1,4 +1,4 @@
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 
 #include "level_field.hpp"
 

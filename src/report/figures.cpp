@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pneumachaos/report/figure.hpp"
+#include "pneumachaos/plot/figure.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {

@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
 #include "pneumachaos/report/reproduce.hpp"
-#include "report/explanations.hpp"
+#include "pneumachaos/claims/explanations.hpp"
 
 namespace pneumachaos {
 namespace {

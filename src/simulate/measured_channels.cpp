@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "simulate/transducer_stages.hpp"
 
 namespace pneumachaos {

@@ -9,7 +9,7 @@
 #include "analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/simulate/measured_channels.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"

@@ -16,7 +16,7 @@
 #include "distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "sweep/grid_refinement.hpp"
 #include "core/parallel_indices.hpp"
 #include "sweep_outputs.hpp"

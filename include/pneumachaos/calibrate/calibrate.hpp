@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pneumachaos/calibrate/calibration_spec.hpp"
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 namespace pneumachaos {
 

@@ -36,7 +36,7 @@ struct MapCondition {
 };
 
 struct ClaimWeight {
-  std::string id;  ///< a claim of the report (docs/report.md), e.g. "fig7_spectrum"
+  std::string id;  ///< a claim of the paper (the claims module; docs/report.md), e.g. "fig7_spectrum"
   double weight = 1.0;
   std::string where;
 };
@@ -125,7 +125,7 @@ CalibrationSpec read_calibration_spec(const std::string& path);
 /// The same from text; `origin` names the source in errors.
 CalibrationSpec parse_calibration_spec(const std::string& text, const std::string& origin);
 
-/// The claim ids the report knows, in its table's order.
+/// The claim ids the claims module knows, in its table's order.
 std::vector<std::string> known_claim_ids();
 
 }  // namespace pneumachaos

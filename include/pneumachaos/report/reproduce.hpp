@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "pneumachaos/model/scenario.hpp"
-#include "pneumachaos/report/claims.hpp"
-#include "pneumachaos/report/figure.hpp"
+#include "pneumachaos/claims/claims.hpp"
+#include "pneumachaos/plot/figure.hpp"
 
 namespace pneumachaos {
 

@@ -1,6 +1,6 @@
 // The rules of the chaotic example's indices, Fig. 2's transients, the damping trend and the
 // friction slope (declared in claim_rules.hpp).
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // The claims about the maps (Figs. 4-6), the verdict count and the headline.
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 #include <fmt/format.h>
 

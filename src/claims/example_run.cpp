@@ -1,11 +1,11 @@
-#include "report/example_run.hpp"
+#include "pneumachaos/claims/example_run.hpp"
 
 #include <algorithm>
 
-#include "model/variation.hpp"
+#include "pneumachaos/model/variation.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 #include "pneumachaos/stability/run_start.hpp"
 
 namespace pneumachaos {

@@ -6,7 +6,7 @@
 #include <array>
 #include <string_view>
 
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {

@@ -1,4 +1,4 @@
-#include "report/explanations.hpp"
+#include "pneumachaos/claims/explanations.hpp"
 
 #include <array>
 #include <string_view>

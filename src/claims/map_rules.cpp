@@ -6,7 +6,7 @@
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
 
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "analysis/local_stretching.hpp"
 #include "pneumachaos/analysis/poincare.hpp"
-#include "pneumachaos/report/claim_rules.hpp"
+#include "pneumachaos/claims/claim_rules.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -1,4 +1,4 @@
-#include "pneumachaos/report/figure.hpp"
+#include "pneumachaos/plot/figure.hpp"
 
 #include <fmt/format.h>
 

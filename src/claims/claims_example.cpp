@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 
 namespace pneumachaos {
 namespace {

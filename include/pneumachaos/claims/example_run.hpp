@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "pneumachaos/analysis/analyze.hpp"
-#include "pneumachaos/report/claims.hpp"
+#include "pneumachaos/claims/claims.hpp"
 #include "pneumachaos/simulate/model_lyapunov.hpp"
 #include "pneumachaos/simulate/simulate.hpp"
 
