@@ -47,7 +47,7 @@ const MeasuredRecord& record() {
 
 void BM_FrictionEstimate(benchmark::State& state) {
   const auto& r = record();
-  const auto settings = estimate_settings_from(rig());
+  const auto settings = estimate_spec_from(rig());
   for (auto _ : state) benchmark::DoNotOptimize(estimate_friction(r, settings).sticks.size());
   state.counters["samples"] = double(r.size());
 }
@@ -55,7 +55,7 @@ void BM_FrictionEstimate(benchmark::State& state) {
 void BM_FrictionAllFits(benchmark::State& state) {
   const auto& r = record();
   const Scenario s = rig();
-  const auto settings = estimate_settings_from(s);
+  const auto settings = estimate_spec_from(s);
   FrictionFitOptions o;
   o.start = s.friction;
   o.fixed_exponent = s.friction.curve.stribeck_exponent;

@@ -9,7 +9,7 @@
 
 #include "fuzz_input.hpp"
 #include "pneumachaos/analysis/autocorrelation.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/analysis/spectral_lines.hpp"
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"

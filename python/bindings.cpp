@@ -98,7 +98,7 @@ py::tuple friction_py(const py::array& t, const py::array& v, const py::array& p
   identify::FrictionFitOptions fit =
       identify::fit_options_for(scenario, models, pressure_dependent, "models");
   fit.max_iterations = max_iterations;
-  identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  identify::EstimateSpec settings = identify::estimate_spec_from(scenario);
   if (window != 0) identify::set_smoothing_window(settings, window, "window");
   std::string json, table;
   {

@@ -9,7 +9,7 @@
 #include "pneumachaos/analysis/autocorrelation.hpp"
 #include "analysis/delay_embedding.hpp"
 #include "pneumachaos/analysis/embedding_parameters.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/analysis/spectral_lines.hpp"
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"

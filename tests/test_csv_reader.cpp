@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
-#include "io/csv_fields.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
 
 namespace pneumachaos {

@@ -79,7 +79,7 @@ Recovered recover(const Scenario& s, const MeasuredRecord& r, std::vector<Fricti
   o.models = std::move(models);
   o.fixed_exponent = s.friction.curve.stribeck_exponent;
   o.start = s.friction;
-  Recovered out{estimate_friction(r, estimate_settings_from(s)), {}};
+  Recovered out{estimate_friction(r, estimate_spec_from(s)), {}};
   out.fits = fit_friction(out.estimate, o);
   return out;
 }
@@ -115,7 +115,7 @@ TEST(FrictionEstimate, StickIntervalsAndForceOfAKnownRecord) {
   // A synthetic record by hand: rest for 0.2 s with the drive rising to 40 N, then sliding at
   // 20 mm/s against 25 N.
   MeasuredRecord r;
-  EstimateSettings s;
+  EstimateSpec s;
   s.area_head_m2 = 1e-3;
   s.area_rod_m2 = 8e-4;
   s.mass_kg = 1.0;
@@ -272,7 +272,7 @@ TEST(FrictionValidation, TooFewSlidingSamplesIsSaidPerModel) {
   }
   EXPECT_TRUE(out.fits.preferred_model.empty());
   EXPECT_EQ(out.estimate.sticks.size(), 1u);
-  const std::string json = friction_json(out.estimate, out.fits, estimate_settings_from(s), "rest");
+  const std::string json = friction_json(out.estimate, out.fits, estimate_spec_from(s), "rest");
   EXPECT_NE(json.find("\"skipped\""), std::string::npos);
 }
 
@@ -284,7 +284,7 @@ TEST(FrictionValidation, PressureDependentFit) {
   FrictionFitOptions o;
   o.models = {FrictionFitModel::kClassic};
   o.pressure_dependent = true;
-  const auto e = estimate_friction(degraded_record(s, 6.0, Degradation{}), estimate_settings_from(s));
+  const auto e = estimate_friction(degraded_record(s, 6.0, Degradation{}), estimate_spec_from(s));
   const auto fits = fit_friction(e, o);
   const ModelFit& f = fits.fits.at(0);
   ASSERT_TRUE(f.converged) << f.summary;

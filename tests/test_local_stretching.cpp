@@ -8,7 +8,7 @@
 #include <numbers>
 #include <vector>
 
-#include "analysis/local_stretching.hpp"
+#include "pneumachaos/analysis/local_stretching.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

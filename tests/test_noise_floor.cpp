@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "analysis/rests.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/analysis/noise_floor.hpp"
 #include "pneumachaos/analysis/regime.hpp"
 

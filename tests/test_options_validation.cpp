@@ -12,8 +12,11 @@
 #include "pneumachaos/identify/friction_fits.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/csv_reader.hpp"
-#include "analysis/local_stretching.hpp"
+#include "pneumachaos/analysis/local_stretching.hpp"
 #include "pneumachaos/analysis/prediction_error.hpp"
+#include "pneumachaos/calibrate/calibrate.hpp"
+#include "pneumachaos/calibrate/calibration_spec.hpp"
+#include "pneumachaos/plot/figure.hpp"
 #include "pneumachaos/report/reproduce.hpp"
 #include "pneumachaos/stability/stability_analysis.hpp"
 
@@ -126,8 +129,8 @@ TEST(OptionsValidation, AnalysisStagesAndTheReportAreNamed) {
   EXPECT_NE(message_of(r).find("output directory"), std::string::npos);
 }
 
-TEST(OptionsValidation, FrictionEstimateSettingsAreNamed) {
-  identify::EstimateSettings s;
+TEST(OptionsValidation, FrictionEstimateSpecFieldsAreNamed) {
+  identify::EstimateSpec s;
   s.area_head_m2 = 1e-3;
   s.area_rod_m2 = 8e-4;
   s.mass_kg = 1.0;
@@ -138,8 +141,45 @@ TEST(OptionsValidation, FrictionEstimateSettingsAreNamed) {
   s.mass_kg = 1.0;
   s.min_stick_s = NAN;
   EXPECT_NE(message_of(s).find("estimate.min_stick_s = nan"), std::string::npos);
-  EXPECT_NE(message_of(identify::EstimateSettings{}).find("estimate.area_head_m2 = 0"),
+  EXPECT_NE(message_of(identify::EstimateSpec{}).find("estimate.area_head_m2 = 0"),
             std::string::npos);
+}
+
+// The figure's, the calibration's maps', optimizer's and run options, named the same way.
+TEST(OptionsValidation, FigureCalibrationMapsAndOptimizerAreNamed) {
+  FigureSpec f;
+  f.name = "fig7_record";
+  EXPECT_EQ(message_of(f), "");
+  f.name = "../fig7";
+  EXPECT_NE(message_of(f).find("figure.name = ../fig7: must be a plain file stem"),
+            std::string::npos) << message_of(f);
+  f.name = "fig7";
+  f.height = 0;
+  EXPECT_NE(message_of(f).find("figure.height = 0: must be between 16 and 10000"),
+            std::string::npos) << message_of(f);
+  MapSpec m;
+  EXPECT_EQ(message_of(m), "");
+  m.duration_s = NAN;
+  EXPECT_NE(message_of(m).find("objective.duration_s = nan: must be > 0 and <= 3600"),
+            std::string::npos) << message_of(m);
+  m.duration_s = 5.0;
+  m.repeats = 0;
+  EXPECT_NE(message_of(m).find("objective.repeats = 0"), std::string::npos);
+  OptimizerSpec o;
+  EXPECT_EQ(message_of(o), "");
+  o.population = 4;
+  EXPECT_NE(message_of(o).find("optimizer.population = 4: must be between 5 and 10000"),
+            std::string::npos) << message_of(o);
+  o.population = 10;
+  o.max_evaluations = 19;
+  EXPECT_NE(message_of(o).find("optimizer.max_evaluations = 19: must be >= 20"), std::string::npos)
+      << message_of(o);
+  CalibrateOptions c;
+  EXPECT_NE(message_of(c).find("calibrate.out_dir"), std::string::npos) << message_of(c);
+  c.out_dir = "/tmp/pneumachaos_never_created_here";
+  c.threads = 5000;
+  EXPECT_NE(message_of(c).find("calibrate.threads = 5000: must be <= 4096"), std::string::npos)
+      << message_of(c);
 }
 
 }  // namespace

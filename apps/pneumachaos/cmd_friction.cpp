@@ -39,7 +39,7 @@ int run_friction(const FrictionArgs& a) {
   identify::FrictionFitOptions fit = identify::fit_options_for(
       scenario, a.models, a.pressure_dependent, "--model");
   fit.max_iterations = a.max_iterations;
-  identify::EstimateSettings settings = identify::estimate_settings_from(scenario);
+  identify::EstimateSpec settings = identify::estimate_spec_from(scenario);
   if (a.window) identify::set_smoothing_window(settings, *a.window, "--window");
   const identify::MeasuredRecord record = identify::read_measured_record(
       a.file, a.columns, record_read_options(scenario, a.scenario, a.units));

@@ -126,8 +126,8 @@ void add_sweep_options(CLI::App* cmd, SweepArgs& a) {
 SweepSpec sweep_spec_from(const SweepArgs& a) {
   SweepSpec spec;
   spec.base = build_scenario(a.scenario.file, a.scenario.sets);
-  const SweepSettings file =
-      a.scenario.file.empty() ? SweepSettings{} : read_sweep_settings(a.scenario.file);
+  const SweepFileSpec file =
+      a.scenario.file.empty() ? SweepFileSpec{} : read_sweep_file_spec(a.scenario.file);
   for (const auto& g : a.grids.empty() ? file.grid : a.grids) spec.axes.push_back(parse_grid_axis(g));
   if (spec.axes.empty()) spec.axes = paper_valve_grid();
   spec.repeats = a.repeats.value_or(file.repeats.value_or(5));

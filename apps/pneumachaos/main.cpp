@@ -13,7 +13,7 @@
 
 #include "cli_main.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "core/module_loader.hpp"
+#include "pneumachaos/core/module_loader.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "analysis/rests.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "exponent_spread.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/validation.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "kd_tree.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -1,4 +1,4 @@
-#include "analysis/local_stretching.hpp"
+#include "pneumachaos/analysis/local_stretching.hpp"
 
 #include <fmt/format.h>
 

@@ -12,7 +12,7 @@
 #include "analysis/linear_region.hpp"
 #include "log_array.hpp"
 #include "pair_distances.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/validation.hpp"
 

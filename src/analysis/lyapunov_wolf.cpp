@@ -9,7 +9,7 @@
 
 #include "analysis/continuous_alignment.hpp"
 #include "analysis/delay_embedding.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/validation.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "analysis/delay_embedding.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/core/error.hpp"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 
 namespace pneumachaos {
 namespace {

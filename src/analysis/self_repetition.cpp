@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pneumachaos/analysis/autocorrelation.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/validation.hpp"
 

@@ -1,4 +1,4 @@
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/fft.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 
 namespace pneumachaos {
 namespace {

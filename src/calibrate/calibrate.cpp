@@ -10,13 +10,14 @@
 #include <functional>
 #include <sstream>
 
-#include "sweep/distribution.hpp"
+#include "pneumachaos/sweep/distribution.hpp"
 #include "calibration_outputs.hpp"
 #include "claim_requirements.hpp"
 #include "evaluation_journal.hpp"
 #include "evaluator.hpp"
 #include "calibrate/optimizer.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/identify/measured_record_csv.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 
@@ -127,10 +128,11 @@ std::vector<identify::MeasuredRecord> read_records(const CalibrationSpec& spec) 
 }  // namespace
 
 void CalibrateOptions::validate() const {
-  if (out_dir.empty()) throw Error("--out", "name the calibration's output directory");
+  const ErrorField out = validation::field("calibrate.out_dir");
+  if (out_dir.empty()) throw Error(out, "", "name the calibration's output directory");
   const std::string problem = output_directory_problem(out_dir);
-  if (!problem.empty()) throw Error("--out", problem);
-  if (threads > 4096) throw Error("--threads", fmt::format("expected at most 4096, got {}", threads));
+  if (!problem.empty()) throw Error(out, " = " + out_dir, problem);
+  validation::require_le(validation::field("calibrate.threads"), static_cast<double>(threads), 4096);
 }
 
 CalibrationResult calibrate(const CalibrationSpec& spec, const CalibrateOptions& o) {

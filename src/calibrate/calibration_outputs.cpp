@@ -177,7 +177,7 @@ FigureSpec convergence_figure(const std::vector<JournalEntry>& entries, std::siz
 
 CalibrationResult best_point_result(const CalibrationSpec& spec, const OptimizerTrace& trace,
                                     const std::vector<JournalEntry>& entries,
-                                    const std::string& dir, const RunSettings& settings) {
+                                    const std::string& dir, const ConditionRunOptions& settings) {
   CalibrationResult r;
   r.evaluations = trace.f.size();
   r.best = trace.best;

@@ -15,7 +15,7 @@ namespace pneumachaos::detail {
 /// run together at it (into dir; resumed when there).
 CalibrationResult best_point_result(const CalibrationSpec& spec, const OptimizerTrace& trace,
                                     const std::vector<JournalEntry>& entries,
-                                    const std::string& dir, const RunSettings& settings);
+                                    const std::string& dir, const ConditionRunOptions& settings);
 
 /// evaluations.csv, best_scenario.toml, claims.json, calibration.json, summary.md (published
 /// together, after figures/convergence.*).

@@ -13,6 +13,7 @@
 
 #include "claim_requirements.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/claims/example_run.hpp"
 
@@ -221,8 +222,8 @@ ConditionSet read_conditions(Table& r) {
   return c;
 }
 
-MapSettings read_map_settings(Table& r) {
-  MapSettings m;
+MapSpec read_map_spec(Table& r) {
+  MapSpec m;
   const toml::node* g = r.get("grid");
   if (g != nullptr) {
     const auto* a = g->as_array();
@@ -238,14 +239,16 @@ MapSettings read_map_settings(Table& r) {
         throw Error(r.where("grid"), e.what());
       }
     }
-    if (m.axes[0].key != "circuit.S1_mm2" || m.axes[1].key != "circuit.S2_mm2")
-      throw Error(r.where("grid"), "the maps are S1 x S2: circuit.S1_mm2 first, then circuit.S2_mm2");
   }
   m.repeats = r.count_or("repeats", m.repeats, 1, 1000);
   m.duration_s = r.number_or("duration_s", m.duration_s);
-  if (!(m.duration_s > 0.0) || m.duration_s > 3600.0)
-    throw Error(r.where("duration_s"), "expected 0 < duration_s <= 3600");
   m.adaptive = r.flag_or("adaptive", true);
+  try {
+    m.validate();
+  } catch (const Error& e) {
+    // The field's id is objective.KEY: name the key's place in the file.
+    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
+  }
   return m;
 }
 
@@ -335,7 +338,7 @@ ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, co
   o.kind = kind == "claims"          ? ObjectiveKind::kClaims
            : kind == "incidence_map" ? ObjectiveKind::kIncidenceMap
                                      : ObjectiveKind::kRecords;
-  o.maps = read_map_settings(r);
+  o.maps = read_map_spec(r);
   if (o.kind != ObjectiveKind::kRecords) o.paper_judge = read_judge(r);
   if (o.kind == ObjectiveKind::kRecords) {
     read_record_settings(r, o, dir);
@@ -372,7 +375,8 @@ OptimizerSpec read_optimizer(const toml::table& t, const std::string& origin) {
   try {
     o.validate();
   } catch (const Error& e) {
-    throw Error(r.where(e.where()), e.message());
+    // The field's id is optimizer.KEY: name the key's place in the file.
+    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
   }
   return o;
 }
@@ -385,18 +389,27 @@ double FreeParameter::value(double u) const {
   return lower + u * (upper - lower);
 }
 
+void MapSpec::validate() const {
+  using namespace validation;
+  if (!axes.empty() && (axes.size() != 2 || axes[0].key != "circuit.S1_mm2" ||
+                        axes[1].key != "circuit.S2_mm2"))
+    throw Error(field("objective.grid"),
+                "the maps are S1 x S2: circuit.S1_mm2 first, then circuit.S2_mm2");
+  require_between(field("objective.repeats"), static_cast<double>(repeats), 1, 1000);
+  require_gt_le(field("objective.duration_s"), duration_s, 0.0, 3600.0);
+}
+
 void OptimizerSpec::validate() const {
+  using namespace validation;
   if (algorithm != "cmaes" && algorithm != "xnes")
-    throw Error("algorithm", "expected \"cmaes\" or \"xnes\" (pagmo2), got \"" + algorithm + "\"");
-  // pagmo's CMA-ES and xNES need at least 5 individuals.
-  if (population < 5 || population > 10000)
-    throw Error("population", fmt::format("expected 5 to 10000, got {}", population));
-  if (max_evaluations < 2 * population)
-    throw Error("max_evaluations", fmt::format("expected at least two populations ({}), got {}",
-                                               2 * population, max_evaluations));
-  if (seed > 4294967295ULL) throw Error("seed", "expected 0 to 4294967295");
-  if (!(sigma0 > 0.0) || sigma0 > 1.0)
-    throw Error("sigma0", fmt::format("expected 0 < sigma0 <= 1, got {}", sigma0));
+    throw Error(field("optimizer.algorithm"),
+                "expected \"cmaes\" or \"xnes\" (pagmo2), got \"" + algorithm + "\"");
+  require_between(field("optimizer.population"), static_cast<double>(population), 5, 10000,
+                  "pagmo's CMA-ES and xNES need at least 5 individuals");
+  require_ge(field("optimizer.max_evaluations"), static_cast<double>(max_evaluations),
+             2.0 * static_cast<double>(population), "two populations");
+  require_le(field("optimizer.seed"), static_cast<double>(seed), 4294967295.0);
+  require_gt_le(field("optimizer.sigma0"), sigma0, 0.0, 1.0);
 }
 
 std::size_t OptimizerSpec::generations() const { return max_evaluations / population - 1; }

@@ -1,6 +1,6 @@
 #include "condition_runs.hpp"
 
-#include "sweep/distribution.hpp"
+#include "pneumachaos/sweep/distribution.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "pneumachaos/claims/example_run.hpp"
@@ -36,7 +36,7 @@ SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCon
   return spec;
 }
 
-SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSettings& settings) {
+SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const ConditionRunOptions& settings) {
   SweepSpec s = spec;
   s.seed = settings.sweep_seed;
   SweepOptions so;
@@ -49,7 +49,7 @@ SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSet
 
 void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
                     const ConditionSet& conditions, const std::string& dir,
-                    const RunSettings& settings, ClaimInputs& inputs) {
+                    const ConditionRunOptions& settings, ClaimInputs& inputs) {
   if (!o.maps.axes.empty()) inputs.grid = {o.maps.axes[0].values, o.maps.axes[1].values};
   for (const MapCondition& c : conditions.maps) {
     SweepSpec spec;

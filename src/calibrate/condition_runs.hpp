@@ -11,7 +11,7 @@
 
 namespace pneumachaos::detail {
 
-struct RunSettings {
+struct ConditionRunOptions {
   std::size_t threads = 0;
   std::uint64_t sweep_seed = 1;
 };
@@ -25,13 +25,13 @@ SweepSpec map_sweep_spec(const ObjectiveSpec& o, Scenario scenario, const MapCon
 /// unusable directory throws.
 void run_conditions(const ObjectiveSpec& o, const Scenario& scenario,
                     const ConditionSet& conditions, const std::string& dir,
-                    const RunSettings& settings, ClaimInputs& inputs);
+                    const ConditionRunOptions& settings, ClaimInputs& inputs);
 
 /// Runs the example (Figs. 3 and 7) and adds its inputs; a failed run leaves them empty.
 void add_example(const ObjectiveSpec& o, const Scenario& scenario, ClaimInputs& inputs);
 
 /// Runs one sweep quietly into dir (resumed when there).
-SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const RunSettings& settings);
+SweepSummary run_map(const SweepSpec& spec, const std::string& dir, const ConditionRunOptions& settings);
 
 /// Removes the map of `role` from the inputs.
 void clear_role(ClaimInputs& inputs, const std::string& role);

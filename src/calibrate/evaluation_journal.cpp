@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
-#include "io/csv_fields.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 
 namespace pneumachaos::detail {
 namespace {

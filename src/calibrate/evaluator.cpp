@@ -23,7 +23,7 @@ double claims_objective(const std::vector<double>& margins, const std::vector<do
 
 namespace detail {
 
-Evaluator::Evaluator(const CalibrationSpec& spec, RunSettings settings,
+Evaluator::Evaluator(const CalibrationSpec& spec, ConditionRunOptions settings,
                      std::optional<MeasuredMap> measured,
                      std::vector<identify::MeasuredRecord> records)
     : spec_(spec), settings_(settings), measured_(std::move(measured)),

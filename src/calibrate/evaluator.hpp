@@ -20,7 +20,7 @@ struct Evaluation {
 
 class Evaluator {
  public:
-  Evaluator(const CalibrationSpec& spec, RunSettings settings,
+  Evaluator(const CalibrationSpec& spec, ConditionRunOptions settings,
             std::optional<MeasuredMap> measured,
             std::vector<identify::MeasuredRecord> records = {});
   /// The names of the terms, in order: the fitted claims' ids, the map errors, or one error
@@ -35,7 +35,7 @@ class Evaluator {
 
  private:
   const CalibrationSpec& spec_;
-  RunSettings settings_;
+  ConditionRunOptions settings_;
   std::optional<MeasuredMap> measured_;
   std::vector<identify::MeasuredRecord> records_;
 };

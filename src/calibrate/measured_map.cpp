@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "pneumachaos/core/error.hpp"
-#include "io/csv_fields.hpp"
-#include "io/csv_text.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 
 namespace pneumachaos {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/local_stretching.hpp"
+#include "pneumachaos/analysis/local_stretching.hpp"
 #include "pneumachaos/analysis/poincare.hpp"
 #include "pneumachaos/claims/claim_rules.hpp"
 

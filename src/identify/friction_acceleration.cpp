@@ -146,7 +146,7 @@ double noise_sd(const std::vector<double>& y) {
 
 namespace detail {
 
-void estimate_acceleration(const MeasuredRecord& r, const EstimateSettings& s,
+void estimate_acceleration(const MeasuredRecord& r, const EstimateSpec& s,
                            FrictionEstimate& e) {
   if (r.a_m_per_s2) {
     e.a_m_per_s2 = *r.a_m_per_s2;

@@ -79,7 +79,7 @@ std::vector<Rest> find_rests(FrictionEstimate& e, double min_stick_s, double dt)
 }
 
 // F = A1 (P1 - Pa) - A2 (P2 - Pa) - F_ext - m a, or the force given in the settings.
-void compute_forces(const MeasuredRecord& r, const EstimateSettings& s, FrictionEstimate& e) {
+void compute_forces(const MeasuredRecord& r, const EstimateSpec& s, FrictionEstimate& e) {
   const std::size_t n = r.size();
   e.F_N.resize(n);
   e.drive_N.resize(n);
@@ -165,13 +165,13 @@ double force_noise(const std::vector<double>& F, const std::vector<double>& F_sm
 
 }  // namespace
 
-void set_smoothing_window(EstimateSettings& settings, long long window, const std::string& field) {
+void set_smoothing_window(EstimateSpec& settings, long long window, const std::string& field) {
   if (window < 3 || window % 2 == 0)
     throw Error(field, fmt::format("expected an odd number of samples >= 3, got {}", window));
   settings.sg_half_width = static_cast<std::size_t>(window / 2);
 }
 
-void EstimateSettings::validate() const {
+void EstimateSpec::validate() const {
   using namespace validation;
   require_finite_gt(field("estimate.area_head_m2"), area_head_m2, 0, "A1");
   require_finite_gt(field("estimate.area_rod_m2"), area_rod_m2, 0, "A2");
@@ -186,8 +186,8 @@ void EstimateSettings::validate() const {
   require_ge(field("estimate.curve_bins"), static_cast<double>(curve_bins), 1);
 }
 
-EstimateSettings estimate_settings_from(const Scenario& s) {
-  EstimateSettings e;
+EstimateSpec estimate_spec_from(const Scenario& s) {
+  EstimateSpec e;
   e.area_head_m2 = s.cylinder.area_head_m2();
   e.area_rod_m2 = s.cylinder.area_rod_m2();
   e.mass_kg = s.load.coupling == LoadCoupling::kRigid ? s.load.mass_kg
@@ -201,7 +201,7 @@ std::size_t FrictionEstimate::sliding_count() const {
   return static_cast<std::size_t>(std::count(sliding.begin(), sliding.end(), 1));
 }
 
-FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSettings& s) {
+FrictionEstimate estimate_friction(const MeasuredRecord& r, const EstimateSpec& s) {
   check_measured_record(r, 20);
   s.validate();
   FrictionEstimate e;
@@ -231,7 +231,7 @@ FrictionEstimate estimate_friction_of_run(const TimeSeries& run, const Scenario&
   const MeasuredRecord r = record_from_columns(
       std::move(t), run.channel("v").values, run.channel("P1").values, run.channel("P2").values,
       run.has_channel("x") ? run.channel("x").values : std::vector<double>{}, "simulation");
-  EstimateSettings s = estimate_settings_from(scenario);
+  EstimateSpec s = estimate_spec_from(scenario);
   if (model_force && run.has_channel("F_friction")) s.force_N = run.channel("F_friction").values;
   return estimate_friction(r, s);
 }

@@ -138,7 +138,7 @@ json fit_json_of(const ModelFit& f) {
 }  // namespace
 
 std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
-                          const EstimateSettings& st, const std::string& source) {
+                          const EstimateSpec& st, const std::string& source) {
   json j;
   j["file"] = source;
   j["samples"] = e.t_s.size();

@@ -18,7 +18,7 @@ int sign_of(double v);
 
 /// e.a_m_per_s2 and the Savitzky-Golay window statistics (or the record's own acceleration);
 /// needs e.stuck and e.velocity_noise_m_per_s.
-void estimate_acceleration(const MeasuredRecord& r, const EstimateSettings& s,
+void estimate_acceleration(const MeasuredRecord& r, const EstimateSpec& s,
                            FrictionEstimate& e);
 
 /// e.curve: the binned steady friction-velocity curve of the sliding samples.

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "pneumachaos/core/error.hpp"
-#include "io/csv_fields.hpp"
-#include "io/csv_text.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 
 namespace pneumachaos::identify {
 namespace {

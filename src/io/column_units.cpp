@@ -7,7 +7,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "io/csv_text.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 #include "pneumachaos/core/error.hpp"
 
 namespace pneumachaos {

@@ -13,8 +13,8 @@
 #include <string_view>
 #include <vector>
 
-#include "io/csv_fields.hpp"
-#include "io/csv_text.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/io/column_units.hpp"

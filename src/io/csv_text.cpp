@@ -1,4 +1,4 @@
-#include "io/csv_text.hpp"
+#include "pneumachaos/io/csv_text.hpp"
 
 #include <fmt/format.h>
 

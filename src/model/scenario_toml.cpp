@@ -21,7 +21,7 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
   for (const auto& [name, node] : table) {
     const std::string key = prefix + std::string(name.str());
     const std::string where = location(origin, node.source());
-    if (prefix.empty() && key == "sweep") continue;  // read by read_sweep_settings
+    if (prefix.empty() && key == "sweep") continue;  // read by read_sweep_file_spec
     if (const auto* sub = node.as_table()) {
       apply_table(scenario, *sub, key + ".", origin, origins);
       continue;
@@ -54,7 +54,7 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
   apply_table(scenario, doc, "", origin, origins);
 }
 
-SweepSettings read_sweep_settings(const std::string& path) {
+SweepFileSpec read_sweep_file_spec(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the scenario file");
   std::ostringstream text;
@@ -66,7 +66,7 @@ SweepSettings read_sweep_settings(const std::string& path) {
     throw Error(location(path, e.source()),
                 std::string("TOML syntax error: ") + std::string(e.description()));
   }
-  SweepSettings s;
+  SweepFileSpec s;
   const toml::table* sweep = doc["sweep"].as_table();
   if (sweep == nullptr) return s;
   for (const auto& [name, node] : *sweep) {

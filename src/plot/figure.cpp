@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 
 namespace pneumachaos {
@@ -49,7 +50,17 @@ int run_gnuplot(const std::string& dir, const std::string& script, const std::st
 
 }  // namespace
 
+void FigureSpec::validate() const {
+  using namespace validation;
+  // The stem names files gnuplot writes and reads inside quoted strings.
+  if (name.empty() || name.front() == '.' || name.find_first_of("/\\'\"\n") != std::string::npos)
+    throw Error(field("figure.name"), " = " + name, "must be a plain file stem");
+  require_between(field("figure.width"), width, 16, 10000, "pixels");
+  require_between(field("figure.height"), height, 16, 10000, "pixels");
+}
+
 FigureFiles render_figure(const FigureSpec& spec, const std::string& relative_dir) {
+  spec.validate();
   std::filesystem::create_directories(relative_dir);
   // gnuplot runs inside the directory: every path handed to it is absolute.
   const std::string dir = std::filesystem::absolute(relative_dir).string();

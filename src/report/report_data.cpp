@@ -9,7 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "io/csv_fields.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 
 namespace pneumachaos {

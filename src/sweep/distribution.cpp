@@ -1,11 +1,11 @@
-#include "distribution.hpp"
+#include "pneumachaos/sweep/distribution.hpp"
 
 #include <cstdlib>
 #include <initializer_list>
 
 #include "mpi_transport.hpp"
 #include "pneumachaos/core/error.hpp"
-#include "core/module_loader.hpp"
+#include "pneumachaos/core/module_loader.hpp"
 
 namespace pneumachaos::detail {
 namespace {

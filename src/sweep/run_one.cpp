@@ -6,7 +6,7 @@
 
 #include "pneumachaos/analysis/analyze.hpp"
 #include "pneumachaos/analysis/paper_judge.hpp"
-#include "analysis/series_statistics.hpp"
+#include "pneumachaos/analysis/series_statistics.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/model/variation.hpp"

@@ -8,7 +8,7 @@
 #include <type_traits>
 
 #include "pneumachaos/core/error.hpp"
-#include "io/csv_fields.hpp"
+#include "pneumachaos/io/csv_fields.hpp"
 #include "pneumachaos/sweep/sweep.hpp"
 
 namespace pneumachaos {

@@ -13,7 +13,7 @@
 
 #include <tbb/task_arena.h>
 
-#include "distribution.hpp"
+#include "pneumachaos/sweep/distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/model/variation.hpp"

@@ -18,7 +18,7 @@ struct CalibrateOptions {
   /// Continue the calibration journalled in out_dir (its evaluations are replayed, not rerun).
   bool resume = false;
   bool progress = true;  ///< one line per evaluation, on a terminal only
-  /// Throws Error naming the option (--out, --threads).
+  /// Throws Error naming the field (calibrate.out_dir, calibrate.threads).
   void validate() const;
 };
 

@@ -63,18 +63,20 @@ struct RecordCondition {
 };
 
 /// The maps' grid and runs (objective and predictions alike).
-struct MapSettings {
+struct MapSpec {
   std::vector<GridAxis> axes;  ///< circuit.S1_mm2 then circuit.S2_mm2
   std::size_t repeats = 2;
   double duration_s = 5.0;
   /// Refine the maps adaptively (docs/sweep.md, "Adaptive maps": validated on the paper's maps).
   bool adaptive = true;
+  /// Throws Error naming objective.grid, objective.repeats or objective.duration_s.
+  void validate() const;
 };
 
 struct ObjectiveSpec {
   ObjectiveKind kind = ObjectiveKind::kClaims;
   ConditionSet fit;            ///< kClaims: the conditions and claims fitted
-  MapSettings maps;            ///< kClaims: the maps' grid; kIncidenceMap: repeats, duration
+  MapSpec maps;            ///< kClaims: the maps' grid; kIncidenceMap: repeats, duration
   double example_record_s = 10.0;
   bool example_model_exponent = false;  ///< the model's own exponent (shown, never scored)
   std::string measured_map;    ///< kIncidenceMap: the CSV's path (relative to the spec's folder)

@@ -15,7 +15,7 @@
 namespace pneumachaos::identify {
 
 /// What the equation of motion needs: geometry, moving mass, ambient and external force.
-struct EstimateSettings {
+struct EstimateSpec {
   double area_head_m2 = 0.0;   ///< A1
   double area_rod_m2 = 0.0;    ///< A2
   double mass_kg = 0.0;        ///< moving mass m
@@ -43,11 +43,11 @@ struct EstimateSettings {
 /// moving rigidly with the rod; the spring's dynamics are ignored (an approximation
 /// documented in docs/friction.md; its error is m_load times the load's relative
 /// acceleration).
-EstimateSettings estimate_settings_from(const Scenario& scenario);
+EstimateSpec estimate_spec_from(const Scenario& scenario);
 
 /// Sets sg_half_width from a Savitzky-Golay window of `window` samples (odd, >= 3); throws
 /// Error(field), naming the option or argument, for any other.
-void set_smoothing_window(EstimateSettings& settings, long long window, const std::string& field);
+void set_smoothing_window(EstimateSpec& settings, long long window, const std::string& field);
 
 struct StickInterval {
   std::size_t begin = 0, end = 0;  ///< samples [begin, end)
@@ -119,7 +119,7 @@ std::size_t choose_sg_half_width(double noise_sd, double third_derivative, doubl
 double noise_sd(const std::vector<double>& y);
 
 /// Throws Error naming the record when the settings are unusable (no areas, no mass).
-FrictionEstimate estimate_friction(const MeasuredRecord& record, const EstimateSettings& settings);
+FrictionEstimate estimate_friction(const MeasuredRecord& record, const EstimateSpec& settings);
 
 /// A simulated run (channels t, v, P1, P2, x as `simulate` writes them) through the same
 /// estimate, for the report's Fig. 3: with `model_force` and an F_friction channel, F(t) is

@@ -16,7 +16,7 @@ std::string friction_summary(const FrictionEstimate& e, const FrictionFits& fits
 /// fits.<model>.<param>.{value,stderr,unit}, fits.<model>.rms_N, breakaway_N,
 /// stick_intervals, rms_N (per model), preferred_model, steady_curve, loops, ...
 std::string friction_json(const FrictionEstimate& e, const FrictionFits& fits,
-                          const EstimateSettings& settings, const std::string& source);
+                          const EstimateSpec& settings, const std::string& source);
 
 /// A [friction] table that plugs `fit` into `simulate` (model, Fc_N, Fs_N, ...).
 std::string friction_scenario_toml(const ModelFit& fit, const std::string& source);

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "pneumachaos/core/hybrid_system.hpp"
-#include "pneumachaos/core/run_settings.hpp"
+#include "pneumachaos/core/run_params.hpp"
 #include "pneumachaos/model/cylinder.hpp"
 #include "pneumachaos/model/friction.hpp"
 #include "pneumachaos/model/supply_line.hpp"

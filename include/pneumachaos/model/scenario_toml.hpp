@@ -39,12 +39,12 @@ void validate_scenario(const Scenario& scenario, const SettingOrigins& origins);
 
 /// The optional [sweep] table of a scenario file: grid = ["KEY=FROM:TO:STEP", ...],
 /// repeats = N, seed = N. Other commands ignore the table.
-struct SweepSettings {
+struct SweepFileSpec {
   std::vector<std::string> grid;
   std::optional<std::size_t> repeats;
   std::optional<std::uint64_t> seed;
 };
-SweepSettings read_sweep_settings(const std::string& path);
+SweepFileSpec read_sweep_file_spec(const std::string& path);
 
 /// Defaults, then the file (when path is not empty), then the overrides; validated.
 Scenario build_scenario(const std::string& path, const std::vector<std::string>& assignments);

@@ -15,6 +15,9 @@ struct FigureSpec {
   std::vector<std::pair<std::string, std::string>> data;  ///< file name -> content
   std::string plot;               ///< gnuplot commands drawing the figure (no terminal/output)
   int width = 900, height = 520;  ///< pixels (PNG and SVG)
+  /// Throws Error naming figure.name (empty, or not a plain file stem: a path separator, a
+  /// quote or a leading dot) or figure.width / figure.height (16 to 10000 pixels).
+  void validate() const;
 };
 
 struct FigureFiles {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "pneumachaos/core/time_series.hpp"
-#include "pneumachaos/core/run_settings.hpp"
+#include "pneumachaos/core/run_params.hpp"
 #include "pneumachaos/model/plant.hpp"
 #include "pneumachaos/simulate/event_integrator.hpp"
 

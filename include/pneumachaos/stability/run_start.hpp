@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "pneumachaos/core/run_settings.hpp"
+#include "pneumachaos/core/run_params.hpp"
 #include "pneumachaos/model/plant.hpp"
 
 namespace pneumachaos {
