@@ -1,5 +1,5 @@
 // Adaptive maps against the full grid, in one process: for each validation map
-// (tests/adaptive_cases.hpp) the full sweep and the adaptive one, their agreement, the runs
+// (tests/support/adaptive_cases.hpp) the full sweep and the adaptive one, their agreement, the runs
 // saved and the wall-time ratio. Not a timed test: the numbers of docs/sweep.md.
 //
 //   bench_adaptive [--step N] [--threads N] [NAME-PREFIX...]    (default: every map)

@@ -13,7 +13,7 @@
 #include <map>
 #include <random>
 
-#include "../tests/reference_series.hpp"
+#include "../tests/support/reference_series.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 #include "analysis/log_array.hpp"
 #include "pneumachaos/core/error.hpp"

@@ -12,7 +12,7 @@
 #include <utility>
 #include <nanoflann.hpp>
 
-#include "../tests/reference_series.hpp"
+#include "../tests/support/reference_series.hpp"
 #include "analysis/delay_embedding.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // Writes a reference record as CSV (t, v) for timing the command line: Lorenz x at dt = 0.01,
-// Rossler x at dt = 0.1, the Henon map's x (tests/reference_series.hpp) or Gaussian white
+// Rossler x at dt = 0.1, the Henon map's x (tests/support/reference_series.hpp) or Gaussian white
 // noise. Used by bench/compare_builds.sh and bench/tisean_cost.sh; the time column is the
 // sample number times the record's step.
 // Usage: write_series lorenz|rossler|henon|noise SAMPLES > file.csv
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "../tests/reference_series.hpp"
+#include "../tests/support/reference_series.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

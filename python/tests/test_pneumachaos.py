@@ -71,7 +71,7 @@ def test_the_second_exponent_only_when_asked():
     x = lorenz_x(10000)
     assert "jacobian" not in pc.analyze(x, 100.0, wolf=False, surrogates=0)["lyapunov"]
     jac = pc.analyze(x, 100.0, wolf=False, surrogates=0, jacobian=True)["lyapunov"]["jacobian"]
-    # Local Jacobians on Lorenz: 0.906 within 10 %, as tests/test_jacobian_exponents.cpp asks.
+    # Local Jacobians on Lorenz: 0.906 within 10 %, as tests/analysis/test_jacobian_exponents.cpp asks.
     assert jac["value"] == pytest.approx(0.906, rel=0.10) and jac["reliable"] is True
     assert jac["disagreement"]["beyond_95"] is False
 

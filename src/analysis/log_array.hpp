@@ -8,7 +8,7 @@
 namespace pneumachaos {
 
 /// out[k] = ln(x[k]) for every k, within 2 ulp of the correctly rounded value (checked in
-/// tests/test_lyapunov.cpp). Any positive finite, zero, infinite or NaN x gives what std::log
+/// tests/analysis/test_lyapunov.cpp). Any positive finite, zero, infinite or NaN x gives what std::log
 /// gives. The result is the same bit for bit on every x86-64 machine: the loop is vectorised
 /// for the processor at hand (AVX2 or the baseline) but performs the same IEEE operations in
 /// the same order per element (no fused multiply-add).

@@ -41,7 +41,7 @@ class TextureTable {
   /// The value and its derivative d/dx at x (for the Jacobian), or nothing outside the range.
   [[nodiscard]] std::optional<std::pair<double, double>> value_and_slope(double position_m) const;
 
-  /// The bound above for these modes (tests/test_friction.cpp checks it).
+  /// The bound above for these modes (tests/model/test_friction.cpp checks it).
   [[nodiscard]] double error_bound() const { return error_bound_; }
 
   /// A lower bound of the interpolant over the whole table.

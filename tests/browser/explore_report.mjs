@@ -1,4 +1,4 @@
-// Drives headless Chromium through a written report as a reader would (tests/report_explore.sh):
+// Drives headless Chromium through a written report as a reader would (tests/report/report_explore.sh):
 // hovers and clicks a map cell and checks the panel against the map's runs.csv, its runs'
 // charts against runs/FIGURE.js and runs.csv, the same cell marked on the other maps, follows a
 // claim's link and checks the cells it marks against points.csv, times the page, takes

@@ -2,7 +2,7 @@
 """Writes flows.tsv from dysts's dysts/data/chaotic_attractors.json (see README.md here).
 
 Usage: extract.py chaotic_attractors.json > flows.tsv
-Only the systems listed below are kept: those whose right-hand side tests/dysts_flows.hpp
+Only the systems listed below are kept: those whose right-hand side tests/support/dysts_flows.hpp
 implements. The values are copied as they are; nothing is computed here.
 """
 import json
