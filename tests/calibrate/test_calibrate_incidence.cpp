@@ -18,20 +18,17 @@
 namespace pneumachaos {
 namespace {
 
-TEST(CalibrationIncidenceMap, TheModelsOwnMapIsMatchedAtItsPoint) {
-  const std::string dir = (std::filesystem::temp_directory_path() /
-                           fmt::format("pneumachaos_incidence_{}", ::getpid())).string();
-  std::filesystem::remove_all(dir);
-  const std::string fixed = "[fixed]\nvariation.friction_rel_sd = 0.03\n";
-  // The "measurement": the model's own map at the generating point, as the objective runs it.
+// The "measurement": the model's own map over `grid` at `base`, as an incidence_map objective
+// runs it, written as the measured-map CSV in dir/measured.csv (chaos by the verdict, or by the
+// paper's three indices); returns the CSV's path.
+std::string measured_map_of(const Scenario& base, double duration_s, std::size_t repeats,
+                            const std::string& s1_axis, bool paper, const std::string& dir) {
   SweepSpec truth;
-  truth.base = parse_calibration_spec(
-      "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n" + fixed +
-          "[objective]\nkind = \"claims\"\nexample = true\nclaims = { fig7_acf = 1 }\n",
-      "x.toml").base;
-  truth.base.run.duration_s = 2.0;
-  truth.axes = {parse_grid_axis("circuit.S1_mm2=2.7:3.0:0.3"), parse_grid_axis("circuit.S2_mm2=0.05:0.65:0.3")};
-  truth.repeats = 2;
+  truth.base = base;
+  truth.base.run.duration_s = duration_s;
+  truth.axes = {parse_grid_axis(s1_axis), parse_grid_axis("circuit.S2_mm2=0.05:0.65:0.3")};
+  truth.repeats = repeats;
+  truth.paper_judge = paper;
   SweepOptions so;
   so.out_dir = dir + "/truth";
   so.progress = false;
@@ -39,9 +36,24 @@ TEST(CalibrationIncidenceMap, TheModelsOwnMapIsMatchedAtItsPoint) {
   std::string csv = "S1_mm2,S2_mm2,stick_slip,chaos\n";
   for (const PointSummary& p : t.per_point)
     csv += fmt::format("{},{},{},{}\n", p.coordinates[0], p.coordinates[1], p.stick_slip_incidence,
-                       p.chaos_incidence);
+                       paper ? p.paper_chaos_incidence : p.chaos_incidence);
   const std::string measured = dir + "/measured.csv";
   std::ofstream(measured) << csv;
+  return measured;
+}
+
+TEST(CalibrationIncidenceMap, TheModelsOwnMapIsMatchedAtItsPoint) {
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           fmt::format("pneumachaos_incidence_{}", ::getpid())).string();
+  std::filesystem::remove_all(dir);
+  const std::string fixed = "[fixed]\nvariation.friction_rel_sd = 0.03\n";
+  // The "measurement": the model's own map at the generating point, as the objective runs it.
+  const Scenario base = parse_calibration_spec(
+      "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n" + fixed +
+          "[objective]\nkind = \"claims\"\nexample = true\nclaims = { fig7_acf = 1 }\n",
+      "x.toml").base;
+  const std::string measured =
+      measured_map_of(base, 2.0, 2, "circuit.S1_mm2=2.7:3.0:0.3", false, dir);
   const CalibrationSpec spec = parse_calibration_spec(
       "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n" + fixed +
           "[objective]\nkind = \"incidence_map\"\nfile = \"" + measured +
@@ -64,23 +76,10 @@ TEST(CalibrationIncidenceMap, UnderThePapersJudgeTheChaosIsThePapersIncidence) {
                            fmt::format("pneumachaos_incidence_paper_{}", ::getpid())).string();
   std::filesystem::remove_all(dir);
   const std::string free = "[[free]]\nkey = \"friction.Fc_N\"\nlower = 19.7\nupper = 40\nsource = \"x\"\n";
-  SweepSpec truth;
-  truth.base = parse_calibration_spec(free + "[objective]\nkind = \"claims\"\nexample = true\n"
-                                      "claims = { fig7_acf = 1 }\n", "x.toml").base;
-  truth.base.run.duration_s = 6.0;
-  truth.axes = {parse_grid_axis("circuit.S1_mm2=2.7:2.7:0.3"), parse_grid_axis("circuit.S2_mm2=0.05:0.65:0.3")};
-  truth.repeats = 1;
-  truth.paper_judge = true;
-  SweepOptions so;
-  so.out_dir = dir + "/truth";
-  so.progress = false;
-  const SweepSummary t = run_sweep(truth, so);
-  std::string csv = "S1_mm2,S2_mm2,stick_slip,chaos\n";
-  for (const PointSummary& p : t.per_point)
-    csv += fmt::format("{},{},{},{}\n", p.coordinates[0], p.coordinates[1], p.stick_slip_incidence,
-                       p.paper_chaos_incidence);
-  const std::string measured = dir + "/measured.csv";
-  std::ofstream(measured) << csv;
+  const Scenario base = parse_calibration_spec(free + "[objective]\nkind = \"claims\"\nexample = true\n"
+                                               "claims = { fig7_acf = 1 }\n", "x.toml").base;
+  const std::string measured =
+      measured_map_of(base, 6.0, 1, "circuit.S1_mm2=2.7:2.7:0.3", true, dir);
   const CalibrationSpec spec = parse_calibration_spec(
       free + "[objective]\nkind = \"incidence_map\"\njudge = \"paper\"\nfile = \"" + measured +
           "\"\nrepeats = 1\nduration_s = 6\n",
