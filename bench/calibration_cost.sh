@@ -12,7 +12,7 @@ evaluations=${2:-30}
 here=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-sed "s/^max_evaluations = .*/max_evaluations = $evaluations/" "$here/calibrations/paper.toml" \
+sed "s/^max_evaluations = .*/max_evaluations = $evaluations/" "$here/scenarios/calibrations/paper.toml" \
   > "$work/spec.toml"
 grep -q "^max_evaluations = $evaluations$" "$work/spec.toml"
 
