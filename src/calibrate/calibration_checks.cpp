@@ -76,7 +76,7 @@ void CalibrationSpec::validate() const {
                   "S2, or a record's)");
   }
   optimizer.validate();
-  objective.maps.validate();
+  objective.validate();
   std::set<std::string> roles;
   check_roles(objective.fit, roles);
   check_roles(predict, roles);

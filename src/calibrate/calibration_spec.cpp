@@ -311,14 +311,8 @@ std::vector<RecordCondition> read_records(Table& r, const std::string& dir) {
 void read_record_settings(Table& r, ObjectiveSpec& o, const std::string& dir) {
   o.records = read_records(r, dir);
   o.segment_s = r.number_or("segment_s", o.segment_s);
-  if (!(o.segment_s >= 0.005 && o.segment_s <= 10.0))
-    throw Error(r.where("segment_s"), "expected 0.005 <= segment_s <= 10");
   o.pressure_scale_kPa = r.number_or("pressure_scale_kPa", o.pressure_scale_kPa);
-  if (!(o.pressure_scale_kPa > 0.0 && o.pressure_scale_kPa <= 1000.0))
-    throw Error(r.where("pressure_scale_kPa"), "expected 0 < pressure_scale_kPa <= 1000");
   o.velocity_scale_mm_per_s = r.number_or("velocity_scale_mm_per_s", o.velocity_scale_mm_per_s);
-  if (!(o.velocity_scale_mm_per_s > 0.0 && o.velocity_scale_mm_per_s <= 10000.0))
-    throw Error(r.where("velocity_scale_mm_per_s"), "expected 0 < velocity_scale_mm_per_s <= 10000");
 }
 
 // judge = "strict" (the default: the regime verdict) or "paper" (the paper's three indices).
@@ -345,21 +339,20 @@ ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, co
   } else if (o.kind == ObjectiveKind::kClaims) {
     o.fit = read_conditions(r);
     o.example_record_s = r.number_or("example_record_s", o.example_record_s);
-    if (!(o.example_record_s > kExampleSettle_s) || o.example_record_s > 3600.0)
-      throw Error(r.where("example_record_s"), "expected 2 < example_record_s <= 3600 (the first 2 s settle)");
     o.example_model_exponent = r.flag_or("example_model_exponent", false);
-    if (o.fit.claims.empty()) throw Error(r.where("claims"), "name at least one claim to fit");
   } else {
     const auto file = r.text("file");
-    if (!file || file->empty()) throw Error(r.where("file"), "needs file = \"measured_map.csv\"");
-    o.measured_map = relative_to(dir, *file);
+    if (file && !file->empty()) o.measured_map = relative_to(dir, *file);
     o.stick_slip_weight = r.number_or("stick_slip_weight", 1.0);
     o.chaos_weight = r.number_or("chaos_weight", 1.0);
-    if (!(o.stick_slip_weight >= 0.0) || !(o.chaos_weight >= 0.0) ||
-        !(o.stick_slip_weight + o.chaos_weight > 0.0))
-      throw Error(r.where("chaos_weight"), "the weights must be >= 0 and not both 0");
   }
   r.no_other_keys();
+  try {
+    o.validate();
+  } catch (const Error& e) {
+    // The field's id is objective.KEY: name the key's place in the file.
+    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
+  }
   return o;
 }
 
@@ -397,6 +390,32 @@ void MapSpec::validate() const {
                 "the maps are S1 x S2: circuit.S1_mm2 first, then circuit.S2_mm2");
   require_between(field("objective.repeats"), static_cast<double>(repeats), 1, 1000);
   require_gt_le(field("objective.duration_s"), duration_s, 0.0, 3600.0);
+}
+
+void ObjectiveSpec::validate() const {
+  using namespace validation;
+  maps.validate();
+  switch (kind) {
+    case ObjectiveKind::kClaims:
+      require_gt_le(field("objective.example_record_s"), example_record_s, kExampleSettle_s, 3600.0,
+                    "the first 2 s settle");
+      if (fit.claims.empty()) throw Error(field("objective.claims"), "name at least one claim to fit");
+      break;
+    case ObjectiveKind::kIncidenceMap:
+      if (measured_map.empty())
+        throw Error(field("objective.file"), "needs file = \"measured_map.csv\"");
+      require_ge(field("objective.stick_slip_weight"), stick_slip_weight, 0.0);
+      require_ge(field("objective.chaos_weight"), chaos_weight, 0.0);
+      require_gt(field("objective.chaos_weight"), stick_slip_weight + chaos_weight, 0.0,
+                 "the weights must not both be 0");
+      break;
+    case ObjectiveKind::kRecords:
+      if (records.empty()) throw Error(field("objective.records"), "name at least one record");
+      require_between(field("objective.segment_s"), segment_s, 0.005, 10.0);
+      require_gt_le(field("objective.pressure_scale_kPa"), pressure_scale_kPa, 0.0, 1000.0);
+      require_gt_le(field("objective.velocity_scale_mm_per_s"), velocity_scale_mm_per_s, 0.0, 10000.0);
+      break;
+  }
 }
 
 void OptimizerSpec::validate() const {

@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
+#include "pneumachaos/model/parameter_grid.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
 
 namespace pneumachaos {
@@ -40,6 +42,15 @@ void apply_table(Scenario& scenario, const toml::table& table, const std::string
   }
 }
 
+// One grid entry of a [sweep] table, as the sweep will read it.
+void check_grid_entry(const std::string& where, const std::string& entry) {
+  try {
+    (void)parse_grid_axis(entry);
+  } catch (const Error& e) {
+    throw Error(where, e.what());
+  }
+}
+
 }  // namespace
 
 void apply_toml(Scenario& scenario, const std::string& toml_text, const std::string& origin,
@@ -52,6 +63,11 @@ void apply_toml(Scenario& scenario, const std::string& toml_text, const std::str
                 std::string("TOML syntax error: ") + std::string(e.description()));
   }
   apply_table(scenario, doc, "", origin, origins);
+}
+
+void SweepFileSpec::validate() const {
+  for (const std::string& entry : grid) check_grid_entry("sweep.grid", entry);
+  if (repeats) validation::require_ge(validation::field("sweep.repeats"), static_cast<double>(*repeats), 1.0);
 }
 
 SweepFileSpec read_sweep_file_spec(const std::string& path) {
@@ -78,6 +94,7 @@ SweepFileSpec read_sweep_file_spec(const std::string& path) {
       for (const auto& item : *list) {
         const auto* str = item.as_string();
         if (str == nullptr) throw Error(where, "expected a list of \"KEY=FROM:TO:STEP\" strings");
+        check_grid_entry(where, str->get());
         s.grid.push_back(str->get());
       }
     } else if (key == "sweep.repeats" || key == "sweep.seed") {

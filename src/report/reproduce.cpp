@@ -12,6 +12,7 @@
 
 #include "pneumachaos/analysis/spectrum.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/identify/friction_estimate.hpp"
 #include "pneumachaos/io/atomic_file.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
@@ -419,7 +420,8 @@ class ReportBuilder {
 }  // namespace
 
 void ReproduceOptions::validate() const {
-  if (out_dir.empty()) throw Error("output directory", "a directory for the report is required");
+  if (out_dir.empty())
+    throw Error(validation::field("reproduce.out_dir"), "", "name the report's output directory");
 }
 
 ReproduceResult reproduce(const ReproduceOptions& o) {

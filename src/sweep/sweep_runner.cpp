@@ -16,6 +16,7 @@
 #include "pneumachaos/sweep/distribution.hpp"
 #include "journal.hpp"
 #include "pneumachaos/core/error.hpp"
+#include "pneumachaos/core/validation.hpp"
 #include "pneumachaos/model/variation.hpp"
 #include "sweep/grid_refinement.hpp"
 #include "core/parallel_indices.hpp"
@@ -26,7 +27,8 @@ namespace pneumachaos {
 bool sweeps_support_mpi() { return detail::Distribution::built_with_mpi(); }
 
 void SweepOptions::validate() const {
-  if (out_dir.empty()) throw Error("output directory", "a directory for the results is required");
+  if (out_dir.empty())
+    throw Error(validation::field("sweep.out_dir"), "", "name the sweep's output directory");
 }
 
 namespace {

@@ -110,6 +110,39 @@ TEST(CalibrationSpec, RefusesInconsistentObjectivesAndOptimizers) {
   EXPECT_NE(refusal(kFree + kObjective + "[objective.grid]\n").find("spec.toml:"), std::string::npos);
 }
 
+// The objective checks its own fields, whatever built it: a file or code.
+TEST(CalibrationSpec, TheObjectiveNamesTheFieldItsKindCannotUse) {
+  const auto message = [](const ObjectiveSpec& o) {
+    try {
+      o.validate();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  ObjectiveSpec claims;
+  EXPECT_NE(message(claims).find("objective.claims"), std::string::npos);
+  claims.fit.claims.push_back(ClaimWeight{"fig7_acf", 1.0, ""});
+  EXPECT_EQ(message(claims), "(no error)");
+  claims.example_record_s = 2.0;
+  EXPECT_NE(message(claims).find("objective.example_record_s = 2: must be > 2 and <= 3600"),
+            std::string::npos) << message(claims);
+  ObjectiveSpec map;
+  map.kind = ObjectiveKind::kIncidenceMap;
+  EXPECT_NE(message(map).find("objective.file"), std::string::npos);
+  map.measured_map = "map.csv";
+  EXPECT_EQ(message(map), "(no error)");
+  map.stick_slip_weight = 0.0;
+  map.chaos_weight = 0.0;
+  EXPECT_NE(message(map).find("objective.chaos_weight"), std::string::npos);
+  ObjectiveSpec records;
+  records.kind = ObjectiveKind::kRecords;
+  EXPECT_NE(message(records).find("objective.records"), std::string::npos);
+  records.records.push_back(RecordCondition{});
+  records.segment_s = 0.001;
+  EXPECT_NE(message(records).find("objective.segment_s = 0.001"), std::string::npos);
+}
+
 // judge = "paper" (claims and incidence_map objectives) asks for the paper's three indices;
 // any other word is refused naming the key, and a records objective has no chaos to judge.
 TEST(CalibrationSpec, ReadsTheJudgeAndRefusesAnotherWord) {

@@ -126,7 +126,8 @@ TEST(OptionsValidation, AnalysisStagesAndTheReportAreNamed) {
   EXPECT_EQ(message_of(ReproduceOptions{}), "");
   ReproduceOptions r;
   r.out_dir.clear();
-  EXPECT_NE(message_of(r).find("output directory"), std::string::npos);
+  EXPECT_NE(message_of(r).find("reproduce.out_dir: name the report's output directory"),
+            std::string::npos);
 }
 
 TEST(OptionsValidation, FrictionEstimateSpecFieldsAreNamed) {

@@ -1,5 +1,10 @@
 // Scenario keys, TOML reading and overrides.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "support/error_text.hpp"
 #include "pneumachaos/core/error.hpp"
@@ -73,6 +78,27 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
             std::string::npos);
   EXPECT_NE(error_of([&] { apply_overrides(s, {"friction.Fs_N"}); }).find("expected key=value"),
             std::string::npos);
+}
+
+// A [sweep] table's entries are checked where they are written, and the same checks hold for
+// a table built in code.
+TEST(Scenario, SweepTableEntriesAreCheckedWhereWritten) {
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("pneumachaos_sweep_table_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << "[sweep]\nrepeats = 2\ngrid = [\"circuit.S2_mm2=0.1:0.3:0.1\", \"circuit.S1_mm2=2:1\"]\n";
+  const std::string message = error_of([&] { (void)read_sweep_file_spec(file.string()); });
+  std::filesystem::remove(file);
+  EXPECT_NE(message.find(file.string() + ":3:"), std::string::npos) << message;
+  EXPECT_NE(message.find("sweep.grid"), std::string::npos) << message;
+  SweepFileSpec s;
+  s.grid = {"circuit.S2_mm2=0.1:0.3:0.1"};
+  s.repeats = 3;
+  EXPECT_EQ(error_of([&] { s.validate(); }), "(no error)");
+  s.repeats = 0;
+  EXPECT_NE(error_of([&] { s.validate(); }).find("sweep.repeats = 0: must be >= 1"), std::string::npos);
+  s.repeats.reset();
+  s.grid.push_back("circuit.S1_mm2=2:1");
+  EXPECT_NE(error_of([&] { s.validate(); }).find("sweep.grid"), std::string::npos);
 }
 
 TEST(Scenario, CrossKeyChecksNameTheKey) {

@@ -89,6 +89,10 @@ struct ObjectiveSpec {
   /// kRecords: the segment-wise simulation's segment and the noise scales of its residuals,
   /// as `fit` uses them (docs/notes/model_fit.md, "Method").
   double segment_s = 0.2, pressure_scale_kPa = 1.0, velocity_scale_mm_per_s = 30.0;
+  /// Throws Error naming the objective's field (objective.example_record_s, objective.claims,
+  /// objective.file, objective.chaos_weight, objective.segment_s, ...) whose value its kind
+  /// cannot use; the maps' fields through MapSpec::validate().
+  void validate() const;
 };
 
 struct OptimizerSpec {

@@ -43,7 +43,12 @@ struct SweepFileSpec {
   std::vector<std::string> grid;
   std::optional<std::size_t> repeats;
   std::optional<std::uint64_t> seed;
+  /// Throws Error naming sweep.grid (an entry that is not KEY=FROM:TO:STEP over a scenario
+  /// key) or sweep.repeats (below 1).
+  void validate() const;
 };
+/// The [sweep] table of the file at `path` (empty when it has none); each entry checked where
+/// it is written (path:line:column: sweep.KEY).
 SweepFileSpec read_sweep_file_spec(const std::string& path);
 
 /// Defaults, then the file (when path is not empty), then the overrides; validated.
