@@ -1,38 +1,55 @@
-# Labels by name pattern, for tests added here and for the ones gtest_discover_tests() finds
-# only after the build (docs/notes/reliability_checks.md):
+# Labels by name pattern, for tests added with add_test() and for the ones gtest_discover_tests()
+# finds only after the build (docs/notes/reliability_checks.md):
 #  - `parallel`: the tests that run our code on several threads, which scripts/test-tsan.sh
 #    runs under ThreadSanitizer;
 #  - `heavy_numerics`: long integrations checked against published values, which the ASan +
-#    UBSan suite leaves out (tests/CMakeLists.txt says which kept tests run the same code).
+#    UBSan suite leaves out (tests/CMakeLists.txt says which kept tests run the same code);
+#  - `end_to_end`: whole pipelines run again through another door, which the ASan + UBSan
+#    suite leaves out too.
 #
-# pneumachaos_label(LABEL name PATTERNS regex...) gives the label to every test of this
-# directory added with add_test() whose name matches one of the regular expressions (APPEND:
-# other labels are kept), and remembers the patterns for the discovered tests.
-# pneumachaos_label_discovered(GTEST_TARGETS target...) then writes one CTest script, run after
-# the discovery's own, that gives each test those targets list in <target>_TESTS
+# pneumachaos_label(LABEL name PATTERNS regex...) declares the rule: the label goes to every
+# test whose name matches one of the regular expressions. The rules are declared once, in
+# tests/CMakeLists.txt before its add_subdirectory() calls, and kept in a global property.
+# pneumachaos_apply_labels() applies every rule to the tests of the directory it is called in:
+# it gives the labels to the tests added there with add_test() (APPEND: other labels are
+# kept), and, when the directory made gtest executables (pneumachaos_folder_tests records them
+# in its PNEUMACHAOS_GTEST_TARGETS property), writes one CTest script, run after the
+# discovery's own, that gives each test those targets list in <target>_TESTS
 # (gtest_discover_tests' default TEST_LIST variable) every label whose patterns it matches.
-# Call both at the end of the directory's CMakeLists.txt, after every add_test() and
-# gtest_discover_tests(); to label more tests, add a pattern to a call.
+# Call it once at the end of each folder's CMakeLists.txt, after every add_test() and
+# gtest_discover_tests(); to label more tests, add a pattern to a rule.
 function(pneumachaos_label)
   cmake_parse_arguments(arg "" "LABEL" "PATTERNS" ${ARGN})
   list(JOIN arg_PATTERNS "|" any)
-  get_property(tests DIRECTORY PROPERTY TESTS)
-  foreach(test IN LISTS tests)
-    if(test MATCHES "${any}")
-      set_property(TEST ${test} APPEND PROPERTY LABELS ${arg_LABEL})
-    endif()
-  endforeach()
-  # The patterns go in as a bracket argument: in a quoted one CTest would read their "\." as
-  # an (invalid) escape and warn on every run.
-  set_property(DIRECTORY APPEND_STRING PROPERTY PNEUMACHAOS_LABEL_RULES
-               "  if(test MATCHES [=[${any}]=])\n    list(APPEND labels ${arg_LABEL})\n  endif()\n")
+  get_property(declared GLOBAL PROPERTY PNEUMACHAOS_LABELS)
+  if(arg_LABEL IN_LIST declared)
+    message(FATAL_ERROR "pneumachaos_label: ${arg_LABEL} is declared twice; add to its patterns")
+  endif()
+  set_property(GLOBAL APPEND PROPERTY PNEUMACHAOS_LABELS ${arg_LABEL})
+  set_property(GLOBAL PROPERTY PNEUMACHAOS_LABEL_PATTERN_${arg_LABEL} "${any}")
 endfunction()
 
-function(pneumachaos_label_discovered)
-  cmake_parse_arguments(arg "" "" "GTEST_TARGETS" ${ARGN})
-  get_property(rules DIRECTORY PROPERTY PNEUMACHAOS_LABEL_RULES)
+function(pneumachaos_apply_labels)
+  get_property(labels GLOBAL PROPERTY PNEUMACHAOS_LABELS)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  set(rules)
+  foreach(label IN LISTS labels)
+    get_property(any GLOBAL PROPERTY PNEUMACHAOS_LABEL_PATTERN_${label})
+    foreach(test IN LISTS tests)
+      if(test MATCHES "${any}")
+        set_property(TEST ${test} APPEND PROPERTY LABELS ${label})
+      endif()
+    endforeach()
+    # The patterns go in as a bracket argument: in a quoted one CTest would read their "\." as
+    # an (invalid) escape and warn on every run.
+    string(APPEND rules "  if(test MATCHES [=[${any}]=])\n    list(APPEND labels ${label})\n  endif()\n")
+  endforeach()
+  get_property(targets DIRECTORY PROPERTY PNEUMACHAOS_GTEST_TARGETS)
+  if(NOT targets)
+    return()
+  endif()
   set(lists)
-  foreach(target IN LISTS arg_GTEST_TARGETS)
+  foreach(target IN LISTS targets)
     string(APPEND lists " \${${target}_TESTS}")
   endforeach()
   set(script "${CMAKE_CURRENT_BINARY_DIR}/discovered_labels_ctest.cmake")
