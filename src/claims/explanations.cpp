@@ -26,8 +26,9 @@ constexpr std::array<Explanation, 5> kExplanations{{
      "of the power; with the Fig. 4 map in the objective (294 evaluations) no chaos beyond the "
      "verdict's false positives",
      "ruled out within these (exploratory) bounds"},
-    {"A compliant second body (the built-in rig's load on its mount)",
-     "the full <code>reproduce</code> of the built-in rig",
+    {"A compliant second body (the load on a compliant mount)",
+     "the full <code>reproduce scenarios/variants/compliant_mount.toml</code> (the built-in rig "
+     "until issue 49)",
      "6 of 20 claims by the strict verdict, 5 of 20 by the paper's criterion, as the one-body "
      "rig; the mount's stiffness has no stated source",
      "ruled out as built (no optimizer run over the mount)"},

@@ -576,12 +576,14 @@ std::string scenario_to_toml(const Scenario& scenario) {
   std::string out =
       "# pneumachaos scenario. Units are in the key names; pressures in MPa are gauge.\n"
       "#\n"
-      "# The defaults are the virtual rig (docs/notes/virtual_rig.md), not a generic cylinder: "
-      "its\n"
-      "# load sits on its own guide, coupled to the rod by a spring (load.coupling = \"spring\",\n"
-      "# a mode near 20 Hz), and its seal is a generalized Maxwell-slip model fitted to that rig.\n"
-      "# For your own cylinder, set load.coupling = \"rigid\" unless its mount is compliant,\n"
-      "# and give its seal (friction.*), bore, stroke and mass; docs/scenario.md says how.\n";
+      "# The defaults are the virtual rig (docs/notes/virtual_rig.md), not a generic cylinder:\n"
+      "# the paper's one rigid moving mass with a generalized Maxwell-slip seal, a supply line\n"
+      "# and chamber end volumes calibrated to the paper's claims (scenarios/calibrations/\n"
+      "# paper.toml's best point). For your own cylinder give its seal (friction.*), bore,\n"
+      "# stroke, mass, volumes and valves; docs/scenario.md says how. The load keys of\n"
+      "# load.coupling = \"spring\" hold the compliant mount of scenarios/variants/\n"
+      "# compliant_mount.toml (the default until issue 49); starting from that file for your\n"
+      "# own cylinder, set load.coupling = \"rigid\" unless its mount is compliant.\n";
   std::string section;
   for (const auto& k : keys()) {
     const auto dot = k.info.key.find('.');

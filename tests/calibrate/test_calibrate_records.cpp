@@ -16,13 +16,17 @@
 #include "pneumachaos/calibrate/calibrate.hpp"
 #include "pneumachaos/calibrate/calibration_spec.hpp"
 #include "pneumachaos/model/scenario_keys.hpp"
+#include "support/variant_scenarios.hpp"
 
 namespace pneumachaos {
 namespace {
 
 const std::string kFree =
     "[[free]]\nkey = \"friction.Fc_N\"\nlower = 15\nupper = 35\nsource = \"a catalogue\"\n";
-const std::string kFixed = "[fixed]\nload.coupling = \"rigid\"\nfriction.model = \"stribeck\"\n";
+// On the compliant-mount rig's cylinder, supply and Fs (the built-in rig's Fs, 31.9 N, is
+// below the free Fc's upper end).
+const std::string kFixed = "[fixed]\nload.coupling = \"rigid\"\nfriction.model = \"stribeck\"\n" +
+                           kCompliantMountFixed;
 
 std::string write_record(const identify::MeasuredRecord& r, const std::string& path) {
   std::ofstream out(path);

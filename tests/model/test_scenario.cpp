@@ -106,7 +106,10 @@ TEST(Scenario, CrossKeyChecksNameTheKey) {
               build_scenario("", {"friction.Fs_N=10", "friction.Fc_N=20"});
             }).find("friction.Fs_N"),
             std::string::npos);
-  EXPECT_NE(error_of([] { build_scenario("", {"cylinder.rod_mm=40"}); }).find("cylinder.rod_mm"),
+  // The bore given too: the built-in rig's (45.5 mm) is a calibrated value, not the point here.
+  EXPECT_NE(error_of([] {
+              build_scenario("", {"cylinder.bore_mm=40", "cylinder.rod_mm=40"});
+            }).find("cylinder.rod_mm"),
             std::string::npos);
 }
 
@@ -118,7 +121,10 @@ TEST(Scenario, DefaultsPrintAsWrittenWithoutConversionNoise) {
     EXPECT_EQ(text.find("0000000"), std::string::npos) << k.key << " = " << text;
     EXPECT_EQ(text.find("9999999"), std::string::npos) << k.key << " = " << text;
   }
-  EXPECT_EQ(setting_text(d, "cylinder.dead_volume_head_cm3"), "20");
+  // As written in default_scenario() (the calibrated text times the key's unit), and the
+  // simple rig's round 20 cm^3.
+  EXPECT_EQ(setting_text(d, "cylinder.dead_volume_head_cm3"), "27.9582580267986");
+  EXPECT_EQ(setting_text(simple_rig_scenario(), "cylinder.dead_volume_head_cm3"), "20");
 }
 
 }  // namespace

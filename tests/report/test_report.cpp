@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/claim_test_maps.hpp"
+#include "support/variant_scenarios.hpp"
 #include "pneumachaos/core/error.hpp"
 #include "pneumachaos/claims/claim_rules.hpp"
 #include "report/figures.hpp"
@@ -219,9 +220,9 @@ TEST(Claims, EveryRowQuotesThePaperAndCarriesItsMargin) {
 }
 
 // The paper's m is the total moving mass: the load levels are set on it, not added to the
-// 1.05 kg piston + rod (which would make "doubled" x1.59).
+// 1.05 kg piston + rod (which would make "doubled" x1.59) of the compliant-mount rig.
 TEST(Claims, LoadLevelsAreTotalMovingMass) {
-  Scenario s = default_scenario();
+  Scenario s = compliant_mount();
   s.set_total_moving_mass(1.5);
   EXPECT_DOUBLE_EQ(s.total_moving_mass_kg(), 1.5);
   EXPECT_NEAR(s.load.mass_kg, 1.5 - s.load.piston_mass_kg, 1e-12);

@@ -8,12 +8,14 @@
 
 #include "pneumachaos/model/scenario_keys.hpp"
 #include "report/report_data.hpp"
+#include "support/variant_scenarios.hpp"
 
 namespace pneumachaos {
 namespace {
 
+// On the compliant-mount rig, whose load is the total less its 1.05 kg piston + rod.
 TEST(ReportData, SetArgumentsNameEveryChangedKeyAndTheMassInFull) {
-  const Scenario rig = default_scenario();
+  const Scenario rig = compliant_mount();
   Scenario map = rig;
   apply_setting(map, "supply.pressure_MPa", 0.30, "test");
   map.set_total_moving_mass(1.5);  // 1.5 - 1.05: not 0.45 to the last bit

@@ -4,6 +4,7 @@
 // and the ideal supply it reduces to when off or very large.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pneumachaos/core/error.hpp"
@@ -12,6 +13,7 @@
 #include "pneumachaos/simulate/simulate.hpp"
 #include "support/stuck_samples.hpp"
 #include "support/tight_options.hpp"
+#include "support/variant_scenarios.hpp"
 
 namespace pneumachaos {
 namespace {
@@ -139,13 +141,22 @@ TEST(SupplyLine, StictionStillHoldsTheVelocityAtExactlyZero) {
   EXPECT_GT(largest_P0_change, 1.0);  // Pa per ms: the line refills while the piston is held
 }
 
+// The simple rig and the compliant-mount rig have the paper's ideal supply; the built-in rig
+// carries the calibrated line (scenarios/calibrations/paper.toml), its pressure P0 a state.
 TEST(SupplyLine, OffByDefaultAddsNoState) {
-  for (const Scenario& s : {simple_rig_scenario(), default_scenario()}) {
+  for (const Scenario& s : {simple_rig_scenario(), compliant_mount()}) {
     EXPECT_FALSE(s.supply_line.enabled());
     const Plant plant(s);
     EXPECT_FALSE(plant.layout().has_supply_line());
     for (const auto& e : plant.layout().entries) EXPECT_NE(e.name, "P0");
   }
+  const Scenario rig = default_scenario();
+  EXPECT_TRUE(rig.supply_line.enabled());
+  const Plant plant(rig);
+  EXPECT_TRUE(plant.layout().has_supply_line());
+  EXPECT_EQ(std::count_if(plant.layout().entries.begin(), plant.layout().entries.end(),
+                          [](const auto& e) { return e.name == "P0"; }),
+            1);
 }
 
 // A line far larger than the chambers, fed through a wide regulator, is the ideal supply.

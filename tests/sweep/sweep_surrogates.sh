@@ -7,8 +7,10 @@ cli=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Two runs the verdict calls stick-slip without surrogates and chaotic with them, on the
-# default rig with volumes frozen at 420 mm (docs/notes/analysis.md, "Surrogate-data test").
-args=(sweep --grid circuit.S1_mm2=2.45:3.20:0.75 --grid circuit.S2_mm2=0.2:0.5:0.3 --repeats 1
+# compliant-mount rig (the default until issue 49) with volumes frozen at 420 mm
+# (docs/notes/analysis.md, "Surrogate-data test").
+rig="$(cd "$(dirname "$0")/../.." && pwd)/scenarios/variants/compliant_mount.toml"
+args=(sweep "$rig" --grid circuit.S1_mm2=2.45:3.20:0.75 --grid circuit.S2_mm2=0.2:0.5:0.3 --repeats 1
       --set run.duration_s=10 --set cylinder.frozen_position_mm=420 --threads 2)
 "$cli" "${args[@]}" --surrogates 19 --out "$work/map" >/dev/null
 for at in "3.2,0.2" "2.45,0.5"; do

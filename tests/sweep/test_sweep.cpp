@@ -262,6 +262,7 @@ TEST(Sweep, AJournalWithoutItsHeaderIsCalledDamagedNotForeign) {
 
 TEST(Sweep, AFailedRunIsRecordedAndTheSweepGoesOn) {
   SweepSpec spec = small_spec();
+  spec.base.cylinder.bore_m = 0.040;  // not the built-in rig's calibrated 45.5 mm
   spec.axes = {parse_grid_axis("cylinder.rod_mm=30:50:10")};  // 40 and 50 mm are not < bore
   const std::string dir = temp_dir("fail");
   SweepOptions o;

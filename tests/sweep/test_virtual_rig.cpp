@@ -1,8 +1,8 @@
 // The virtual rig's acceptance (docs/notes/virtual_rig.md holds the evidence around these numbers).
 // The chaos of the frozen light-piston rig (volumes frozen at 420 mm, 0.53 kg, LuGre seal:
 // scenarios/variants/frozen_light_piston.toml), pinned so that no change can silently lose that
-// mechanism; and the paper's chaotic point on the DEFAULT rig (volumes following the piston
-// over 500 mm).
+// mechanism; and the paper's chaotic point on the compliant-mount rig (the default until issue
+// 49, scenarios/variants/compliant_mount.toml: volumes following the piston over 500 mm).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,8 +25,8 @@ ModelLyapunovOptions measuring(double seconds) {
   return o;
 }
 
-TEST(VirtualRig, DefaultIsThePapersChaoticPointWithAMovingPiston) {
-  const Scenario s = default_scenario();
+TEST(VirtualRig, CompliantMountIsThePapersChaoticPointWithAMovingPiston) {
+  const Scenario s = compliant_mount();
   EXPECT_DOUBLE_EQ(s.circuit.S1(), 2.70e-6);
   EXPECT_DOUBLE_EQ(s.circuit.S2(), 0.35e-6);
   EXPECT_DOUBLE_EQ(s.supply_gauge_Pa, 0.25e6);
@@ -37,10 +37,10 @@ TEST(VirtualRig, DefaultIsThePapersChaoticPointWithAMovingPiston) {
   EXPECT_NEAR(s.load.piston_mass_kg, 0.26 + 1.58 * s.cylinder.stroke_m, 0.01);
 }
 
-TEST(VirtualRig, DefaultRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel) {
+TEST(VirtualRig, CompliantMountRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel) {
   // At the choked meter-out speed (~66 mm/s) the 500 mm stroke takes ~7.5 s, within the
   // default 10 s run: the record ends at the stroke end, not at the duration.
-  const Scenario s = default_scenario();
+  const Scenario s = compliant_mount();
   const SimulationResult sim = simulate(Plant(s), s.run);
   ASSERT_TRUE(sim.summary.ok()) << sim.summary.message;
   EXPECT_EQ(sim.summary.termination, Termination::kTerminalEvent);
@@ -69,13 +69,13 @@ TEST(VirtualRig, DefaultRecordEndsAtTheStrokeEndAndItsVerdictAgreesWithTheModel)
 }
 
 // The valve law's laminar patch near r = 1 is a numerical device and must not decide the
-// chaos (docs/model.md, "Valves"): at a stationary chaotic point of the default rig (volumes
-// frozen at 420 mm, S2 0.50 mm^2, where the supply valve runs at r ~ 0.994 and the exponent is
-// resolvable) moving the junction from 0.995 to 0.9995 leaves the model's exponent within its
-// uncertainty. The patch matches the turbulent branch in value and slope: no kink at the
+// chaos (docs/model.md, "Valves"): at a stationary chaotic point of the compliant-mount rig
+// (volumes frozen at 420 mm, S2 0.50 mm^2, where the supply valve runs at r ~ 0.994 and the
+// exponent is resolvable) moving the junction from 0.995 to 0.9995 leaves the model's exponent
+// within its uncertainty. The patch matches the turbulent branch in value and slope: no kink at the
 // junction.
 TEST(VirtualRig, LaminarPatchWidthDoesNotDecideTheExponent) {
-  Scenario s = default_scenario();
+  Scenario s = compliant_mount();
   s.cylinder.frozen_position_m = 0.420;
   s.circuit.S2_m2 = 0.50e-6;
   ModelLyapunovOptions m;

@@ -109,7 +109,7 @@ struct Scenario {
   LoadParams load;
   VariationParams variation;
   ThermalParams thermal;
-  SupplyLineParams supply_line;  ///< off by default: the ideal supply of eqs. (2)-(3)
+  SupplyLineParams supply_line;  ///< off in Scenario{} (eqs. (2)-(3)); the built-in rig has one
   TransducerParams transducer;   ///< ideal by default: the records are the sampled signals
   RunParams run;
 
@@ -126,16 +126,17 @@ struct Scenario {
   void set_total_moving_mass(double kg);
 };
 
-/// The built-in default scenario: the virtual rig (a 1.5 kg load on its own guide coupled to a
-/// 1.05 kg piston + rod by a compliant mount, a generalized Maxwell-slip seal on a wide
-/// Stribeck curve, chamber volumes following the piston over a 500 mm stroke), at the paper's
-/// chaotic point S1 = 2.70, S2 = 0.35 mm^2. Every value and its reasoning:
-/// docs/notes/virtual_rig.md and docs/scenario.md.
+/// The built-in default scenario: the virtual rig (the paper's one rigid moving mass of 1.5 kg,
+/// a generalized Maxwell-slip seal on a wide, pressure-dependent Stribeck curve, a supply line,
+/// chamber volumes following the piston over a 500 mm stroke, calibrated by
+/// scenarios/calibrations/paper.toml), at the paper's chaotic point S1 = 2.70, S2 = 0.35 mm^2.
+/// Its spring-coupling keys hold the compliant mount of scenarios/variants/compliant_mount.toml.
+/// Every value and its reasoning: docs/notes/virtual_rig.md and docs/scenario.md.
 Scenario default_scenario();
 
 /// What a user should know about a valid scenario, one sentence each (commands print them as
-/// notes): a cylinder other than the virtual rig's (another bore) that still carries
-/// the rig's compliant load mount, whose mode then dominates its record.
+/// notes): a cylinder other than the compliant-mount rig's (another bore) that still carries
+/// that rig's load mount, whose mode then dominates its record.
 std::vector<std::string> scenario_notes(const Scenario& scenario);
 
 /// The simple rig: one rigid moving mass, Stribeck seal friction with true stiction, volumes
