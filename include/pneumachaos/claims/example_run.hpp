@@ -19,7 +19,7 @@ constexpr double kExampleSettle_s = 2.0;
 struct ExampleRun {
   SimulationResult sim;          ///< the whole record
   std::size_t settle = 0;        ///< first sample of the settled part
-  std::vector<double> v;         ///< the settled velocity [m/s]
+  std::vector<double> v;         ///< the settled velocity [m/s], as its transducer records it
   AnalysisResult analysis;       ///< of v
   ModelLyapunovResult model;     ///< the model's own exponent (ok = false when not asked)
 };
