@@ -9,7 +9,8 @@ namespace pneumachaos {
 namespace {
 
 // Five explanations, each a row whose status (its last cell) is one of the three the section
-// promises: reproduces, ruled out (within stated bounds) or untested.
+// promises (reproduces, ruled out within stated bounds, or untested) and whose test is a
+// calibration.
 TEST(Explanations, EveryRowEndsInOneOfTheThreeStatuses) {
   const std::string h = explanations_html();
   std::size_t rows = 0;
@@ -19,6 +20,9 @@ TEST(Explanations, EveryRowEndsInOneOfTheThreeStatuses) {
     const std::size_t end = h.find("</td></tr>", at);
     const std::size_t last = h.rfind("<td>", end) + 4;
     const std::string status = h.substr(last, end - last);
+    // Each explanation was tested with the optimizer: its row names a calibration.
+    EXPECT_NE(h.substr(at, end - at).find("calibrate scenarios/calibrations/"), std::string::npos)
+        << h.substr(at, 80);
     EXPECT_TRUE(status.starts_with("reproduces") || status.starts_with("ruled out") ||
                 status.starts_with("untested"))
         << status;
