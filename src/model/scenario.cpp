@@ -172,12 +172,12 @@ Scenario default_scenario() {
   // Seal on the piston + rod: a Stribeck curve with generalized Maxwell-slip presliding
   // (docs/notes/virtual_rig.md, "What was tried", 5-6). Calibrated within sourced bounds: Fc
   // and Fs (15-30 / 30-50 N measured for 32-40 mm seals) and their rise with the chamber
-  // pressures (0-50 N/MPa, Tran & Yanada). Without a source, kept from the earlier rig: the
+  // pressures (0-50 N/MPa, Tran & Yanada). Without a source, not calibrated: the
   // drop over ~45 mm/s (the negative slope of the paper's Fig. 3 at its operating speeds), the
   // exponent, the viscous term, and the presliding regime: 4 GMS elements sharing 1e6 N/m,
   // 250 um to reach their level (no measured value for a 40 mm lip seal; same notes, item 5).
   // Their quasi-static limit where the contact slides fast (docs/model.md, "Friction"): 32000
-  // 1/s, the lowest threshold tried that the earlier rig's chaotic (S2 0.35 mm^2) and
+  // 1/s, the lowest threshold tried that the compliant-mount rig's chaotic (S2 0.35 mm^2) and
   // stick-slip (0.05-0.20) points never reach.
   // LuGre bristles (Canudas de Wit et al. 1995), unused by GMS, so that
   // `--set friction.model=lugre` compares the two seals on the same curve.
@@ -211,7 +211,7 @@ Scenario default_scenario() {
   s.supply_line.regulator_S_m2 = 2.7512879226873 * 1e-6;
   s.valve.critical_ratio = 0.1;
   // The spring coupling's keys, used only with load.coupling = "spring": the compliant mount
-  // of the earlier default (scenarios/variants/compliant_mount.toml). Piston + rod of a 40/16 mm
+  // of scenarios/variants/compliant_mount.toml. Piston + rod of a 40/16 mm
   // cylinder weigh about 0.26 kg + 1.58 kg/m x stroke: 1.05 kg for this 500 mm stroke; 12.46
   // kN/m puts the mount's mode at 22.6 Hz with 1.05 kg (a ~1.7 mm sheet-metal bracket); 7 N*s/m
   // is a damping ratio of 0.04; the load's own LuGre guide. None has a source.

@@ -582,7 +582,7 @@ std::string scenario_to_toml(const Scenario& scenario) {
       "# paper.toml's best point). For your own cylinder give its seal (friction.*), bore,\n"
       "# stroke, mass, volumes and valves; docs/scenario.md says how. The load keys of\n"
       "# load.coupling = \"spring\" hold the compliant mount of scenarios/variants/\n"
-      "# compliant_mount.toml (the default until issue 49); starting from that file for your\n"
+      "# compliant_mount.toml (two bodies); starting from that file for your\n"
       "# own cylinder, set load.coupling = \"rigid\" unless its mount is compliant.\n";
   std::string section;
   for (const auto& k : keys()) {

@@ -1,5 +1,5 @@
 // calibrate's incidence_map objective end to end: a map measured on the model itself (a sweep
-// at Fc = 19.7 N on the compliant-mount rig, the default until issue 49) is matched exactly at
+// at Fc = 19.7 N on the compliant-mount rig, scenarios/variants/compliant_mount.toml) is matched exactly at
 // the generating point and missed elsewhere.
 #include <gtest/gtest.h>
 

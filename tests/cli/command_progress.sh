@@ -3,7 +3,7 @@
 # pseudo-terminal from script(1)) once they have run 2 s: `simulate` and `lyapunov` on the
 # frozen-volume rig (VARIANT, no stroke end) over 4,000 s and 2,000 s of model time (about 5
 # and 9 s of work); `friction` and `fit` on a 120 s record of the compliant-mount rig (the
-# default until issue 49, compliant_mount.toml beside VARIANT; on the one-body default
+# compliant_mount.toml beside VARIANT; on the one-body default
 # `friction` ends within the 2 s) with a 20 m stroke (about 3 s and minutes of work); each
 # stopped once its line appears; none with --quiet, nor when standard error is not a terminal.
 set -uo pipefail

@@ -4,7 +4,7 @@
 // too fast for it (docs/notes/performance.md, "The GMS seal's quasi-static limit"); where the
 // contact slides fast it must keep the run within the default tolerances' own error and take
 // the elements' stiffness out of the step, measured on the compliant-mount rig it was chosen
-// on (scenarios/variants/compliant_mount.toml, the default until issue 49).
+// on (scenarios/variants/compliant_mount.toml).
 #include <gtest/gtest.h>
 
 #include <algorithm>

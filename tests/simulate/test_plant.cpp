@@ -162,8 +162,7 @@ TEST(Plant, LuGreGivesTheSameSteadySpeedWithEitherStepper) {
   for (std::size_t i = 0; i < va.size(); ++i) EXPECT_NEAR(va[i], vb[i], 1e-6);
 }
 
-// The compliant-mount rig's guide (scenarios/variants/compliant_mount.toml, the default until
-// issue 49) has a Stribeck exponent of 0.5, whose slope is infinite at rest: the Jacobian
+// The compliant-mount rig's guide (scenarios/variants/compliant_mount.toml) has a Stribeck exponent of 0.5, whose slope is infinite at rest: the Jacobian
 // there takes the columns of difference quotients (docs/model.md, "Friction"), finite, and
 // the stiff stepper runs that rig from rest (a NaN Jacobian would make Rosenbrock 4 fail at
 // t = 0 with "step size underflow").

@@ -20,7 +20,7 @@ inline Scenario frozen_light_piston(const std::vector<std::string>& sets = {}) {
   return variant_scenario("frozen_light_piston.toml", sets);
 }
 
-/// [fixed] lines (a calibration spec's) that give the keys issue 49 changed, but the Coulomb
+/// [fixed] lines (a calibration spec's) that give the keys where the one-body default and the compliant-mount rig differ, but the Coulomb
 /// friction and the coupling, their compliant-mount values: the seal's Fs and pressure gains,
 /// the cylinder, the supply line and b. For the calibration tests measured on that rig.
 inline const std::string kCompliantMountFixed =
@@ -30,7 +30,7 @@ inline const std::string kCompliantMountFixed =
     "supply_line.volume_cm3 = 0\nsupply_line.regulator_S_mm2 = 10.000000000000002\n"
     "valve.critical_ratio = 0.528\n";
 
-/// The compliant-mount rig, the built-in default until issue 49: the load on its own guide
+/// The compliant-mount rig: the load on its own guide
 /// behind a compliant mount, the GMS seal, a 40 mm bore, no supply line
 /// (scenarios/variants/compliant_mount.toml).
 inline Scenario compliant_mount(const std::vector<std::string>& sets = {}) {

@@ -7,7 +7,7 @@ cli=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Two runs the verdict calls stick-slip without surrogates and chaotic with them, on the
-# compliant-mount rig (the default until issue 49) with volumes frozen at 420 mm
+# compliant-mount rig (compliant_mount.toml) with volumes frozen at 420 mm
 # (docs/notes/analysis.md, "Surrogate-data test").
 rig="$(cd "$(dirname "$0")/../.." && pwd)/scenarios/variants/compliant_mount.toml"
 args=(sweep "$rig" --grid circuit.S1_mm2=2.45:3.20:0.75 --grid circuit.S2_mm2=0.2:0.5:0.3 --repeats 1

@@ -56,7 +56,7 @@ TEST(DelayWithinAnOrbit, ShimizuMoriokaIsEmbeddedWithinAnOrbitAndJudgedChaotic) 
   EXPECT_NEAR(r.divergence.lambda_per_s, truth, 1.96 * r.divergence.uncertainty_per_s);
 }
 
-// The compliant-mount rig (the default until issue 49) at S2 = 0.20 mm^2: stick-slip, its
+// The compliant-mount rig (scenarios/variants/compliant_mount.toml) at S2 = 0.20 mm^2: stick-slip, its
 // mutual-information minimum (136 samples) past its orbital period (107). As a velocity (rests
 // judged) the delay is kept; as another quantity (no rests looked for) the rule replaces it.
 TEST(DelayWithinAnOrbit, ARigRecordRestingBetweenSlipsKeepsItsDelay) {
