@@ -222,6 +222,17 @@ ConditionSet read_conditions(Table& r) {
   return c;
 }
 
+// spec.validate(), a refusal naming the key's place in the file (the field's id is
+// SECTION.KEY; the table's keys are KEY).
+template <typename Spec>
+void validate_in_file(Table& r, const Spec& spec) {
+  try {
+    spec.validate();
+  } catch (const Error& e) {
+    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
+  }
+}
+
 MapSpec read_map_spec(Table& r) {
   MapSpec m;
   const toml::node* g = r.get("grid");
@@ -243,13 +254,7 @@ MapSpec read_map_spec(Table& r) {
   m.repeats = r.count_or("repeats", m.repeats, 1, 1000);
   m.duration_s = r.number_or("duration_s", m.duration_s);
   m.adaptive = r.flag_or("adaptive", true);
-  try {
-    m.validate();
-  } catch (const Error& e) {
-    // The field's id is objective.KEY: name the key's place in the file.
-    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
-  }
-  return m;
+  return m;  // checked with the objective (ObjectiveSpec::validate)
 }
 
 std::string relative_to(const std::string& dir, const std::string& file) {
@@ -347,12 +352,7 @@ ObjectiveSpec read_objective(const toml::table& t, const std::string& origin, co
     o.chaos_weight = r.number_or("chaos_weight", 1.0);
   }
   r.no_other_keys();
-  try {
-    o.validate();
-  } catch (const Error& e) {
-    // The field's id is objective.KEY: name the key's place in the file.
-    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
-  }
+  validate_in_file(r, o);
   return o;
 }
 
@@ -365,12 +365,7 @@ OptimizerSpec read_optimizer(const toml::table& t, const std::string& origin) {
   o.seed = r.count_or("seed", o.seed, 0, 4294967295.0);
   o.sigma0 = r.number_or("sigma0", o.sigma0);
   r.no_other_keys();
-  try {
-    o.validate();
-  } catch (const Error& e) {
-    // The field's id is optimizer.KEY: name the key's place in the file.
-    throw Error(r.where(e.field().substr(e.field().find('.') + 1)), e.message());
-  }
+  validate_in_file(r, o);
   return o;
 }
 
