@@ -3,21 +3,25 @@
 
 Usage:
     python3 bench/transducer_robustness.py PNEUMACHAOS OUT_DIR [--surrogates N]
-        [--max-false-chaos N]
+        [--max-false-chaos N] [--changes]
 
-Three rigs (the default, the one-body rigid rig, scenarios/variants/frozen_light_piston.toml) at
-S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and 5 % bore texture, 30 s or
-to the stroke end (records of at least 3.2 s kept), each analysed from 2 s clean and with:
-white noise of 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation over +-0.5 m/s,
-and a first-order lag of 100 / 300 Hz (the transducer stages of docs/model.md, applied here to
-the clean velocity so the clean and corrupted records share one motion). Each corruption is
-seeded from the record's name. Prints, per corruption, how many verdicts keep the clean
-record's class, how many records not chaotic clean are called chaotic, and how many stick-slip
-flags are kept; docs/notes/analysis.md "Noise floor" gives the table. The records are kept in
-OUT_DIR and reused. About 1.5 min on two cores with --surrogates 0 (the sweep's setting),
-and a few minutes more to simulate the records the first time. With --max-false-chaos N it
-exits 1 when more than N noisy, quantised or band-limited records are called chaotic whose
-clean record is not (the CTest long.transducer_robustness).
+Three rigs (the default, scenarios/variants/compliant_mount.toml, scenarios/variants/
+frozen_light_piston.toml) at S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and
+5 % bore texture, 30 s or to the stroke end (records of at least 3.2 s kept), each analysed from
+2 s clean and with: white noise of 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation
+over +-0.5 m/s, and a first-order lag of 100 / 300 Hz (the transducer stages of docs/model.md,
+applied here to the clean velocity so the clean and corrupted records share one motion). Each
+corruption is seeded from the record's name. Each record also carries the model's own exponent
+over its run (`sweep --model-exponent`): chaotic when it exceeds 3 times its uncertainty.
+
+Prints, per corruption, how many verdicts keep the clean record's class, how many records not
+chaotic clean are called chaotic ("false chaos"), how many of those the model's exponent does
+not call chaotic either ("model not"), and how many stick-slip flags are kept;
+docs/notes/analysis.md "Noise floor" gives the table. --changes lists every record whose class
+or flag changed. The records are kept in OUT_DIR and reused. About 1.5 min on two cores with
+--surrogates 0 (the sweep's setting), and a minute more to simulate the records the first time.
+With --max-false-chaos N it exits 1 when more than N noisy, quantised or band-limited records
+are called chaotic whose clean record is not (the CTest long.transducer_robustness).
 """
 import argparse
 import collections
@@ -31,7 +35,7 @@ import zlib
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RIGS = {'default': [], 'rigid': ['--set', 'load.coupling=rigid', '--set', 'load.mass_kg=1.5'],
+RIGS = {'default': [], 'compliant': [os.path.join(REPO, 'scenarios/variants/compliant_mount.toml')],
         'frozen': [os.path.join(REPO, 'scenarios/variants/frozen_light_piston.toml')]}
 S2 = [0.05, 0.2, 0.35, 0.5, 0.65, 1.25, 3.35]
 REPEATS = 3
@@ -88,15 +92,28 @@ def judge(cli, t, x, path, surrogates):
     return verdict['regime'], verdict['stick_slip']
 
 
+def model_chaotic(run_path):
+    """The model's own exponent beyond 3 times its uncertainty (docs/sweep.md), from the
+    runs.csv line `sweep --replay` printed."""
+    fields = dict(line.split(None, 1) for line in open(run_path).read().splitlines()[1:]
+                  if len(line.split(None, 1)) == 2)
+    lam = float(fields['lambda_model_per_s'])
+    sd = float(fields['lambda_model_uncertainty_per_s'])
+    return lam > 0.0 and lam > 3.0 * sd
+
+
 def record(cli, out, rig, s2, repeat):
     path = os.path.join(out, f'{rig}_{s2}_{repeat}.csv')
-    if not os.path.exists(path):
-        subprocess.run([cli, 'sweep'] + RIGS[rig] + [
+    if not os.path.exists(path + '.run'):
+        done = subprocess.run([cli, 'sweep'] + RIGS[rig] + [
             '--grid', f'circuit.S2_mm2={s2}:{s2}:0.1', '--repeats', str(REPEATS),
             '--set', 'variation.friction_rel_sd=0.03', '--set', 'variation.texture_rel=0.05',
-            '--set', 'run.duration_s=30', '--replay', f'0:{repeat}', '-o', path],
-            capture_output=True, check=True)
-    return velocity(path)
+            '--set', 'run.duration_s=30', '--model-exponent', '--replay', f'0:{repeat}',
+            '-o', path], capture_output=True, text=True, check=True)
+        with open(path + '.run', 'w') as f:
+            f.write(done.stderr)
+    t, v = velocity(path)
+    return t, v, model_chaotic(path + '.run')
 
 
 def main():
@@ -105,14 +122,17 @@ def main():
     parser.add_argument('out')
     parser.add_argument('--surrogates', type=int, default=0)
     parser.add_argument('--max-false-chaos', type=int, default=None)
+    parser.add_argument('--changes', action='store_true',
+                        help='also list every record whose class or stick-slip flag changed')
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     scratch = os.path.join(args.out, 'judged.csv')
-    tally = collections.defaultdict(lambda: [0, 0, 0, 0, 0])
+    tally = collections.defaultdict(lambda: [0, 0, 0, 0, 0, 0])
+    changes = []
     for rig in RIGS:
         for s2 in S2:
             for repeat in range(REPEATS):
-                t, v = record(args.cli, args.out, rig, s2, repeat)
+                t, v, truth = record(args.cli, args.out, rig, s2, repeat)
                 if len(v) < 3200:
                     continue
                 seed = zlib.crc32(f'{rig}{s2}{repeat}'.encode())
@@ -120,13 +140,22 @@ def main():
                             for name, x in corruptions(v, seed).items()}
                 clean, clean_flag = verdicts.pop('clean')
                 for name, (regime, flag) in verdicts.items():
-                    kept, total, false_chaos, flags, flagged = tally[name]
-                    tally[name] = [kept + (regime == clean), total + 1,
-                                   false_chaos + (regime == 'chaotic' and clean != 'chaotic'),
+                    if regime != clean or flag != clean_flag:
+                        changes.append(f'{rig} S2={s2} run {repeat} {name}: '
+                                       f'{clean}{"*" if clean_flag else ""} -> '
+                                       f'{regime}{"*" if flag else ""}'
+                                       f'{" (model: chaotic)" if truth else ""}')
+                    kept, total, false_chaos, model_not, flags, flagged = tally[name]
+                    new_chaos = regime == 'chaotic' and clean != 'chaotic'
+                    tally[name] = [kept + (regime == clean), total + 1, false_chaos + new_chaos,
+                                   model_not + (new_chaos and not truth),
                                    flags + (clean_flag and flag), flagged + clean_flag]
-    for name, (kept, total, false_chaos, flags, flagged) in tally.items():
-        print(f'{name:11s} class kept {kept}/{total}  false chaos {false_chaos}  '
-              f'stick-slip kept {flags}/{flagged}')
+    for name, (kept, total, false_chaos, model_not, flags, flagged) in tally.items():
+        print(f'{name:11s} class kept {kept}/{total}  false chaos {false_chaos} '
+              f'(model not {model_not})  stick-slip kept {flags}/{flagged}')
+    if args.changes:
+        print('changed (* marks the stick-slip flag):')
+        print('\n'.join(changes))
     false_chaos = sum(counts[2] for counts in tally.values())
     print(f'false chaos in all: {false_chaos}')
     if args.max_false_chaos is not None and false_chaos > args.max_false_chaos:
