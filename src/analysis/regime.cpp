@@ -295,13 +295,13 @@ Verdict decide_regime(const RegimeEvidence& e, const VerdictOptions& o) {
              fmt::format(
                  "stick-slip: {} flat rest intervals of >= {} samples at |x| <= {:.4g} "
                  "({} x max|x|{}) (need {}), {:.1f} % of the time at rest (need {:.1f} %)",
-                 e.rest_intervals, o.min_rest_samples_at(e.rest_noise_sd), e.rest_level, o.rest_fraction,
-                 e.rest_noise_sd > 0.0 ? fmt::format(" + {} x the noise floor {:.3g} / sqrt({}), on "
-                                                "the running mean over {} samples; without a "
+                 e.rest_intervals, o.min_rest_samples, e.rest_level, o.rest_fraction,
+                 e.rest_noise_sd > 0.0 ? fmt::format(" + {} x 1.25 x the noise floor {:.3g} / "
+                                                "sqrt({}) (a median's sd), on the running "
+                                                "median over {} samples; without a "
                                                 "trend and within {} x the noise about zero",
                                                 o.rest_noise_sigmas, e.rest_noise_sd,
-                                                o.min_rest_samples_at(e.rest_noise_sd),
-                                                o.min_rest_samples_at(e.rest_noise_sd),
+                                                o.rest_window_in_noise, o.rest_window_in_noise,
                                                 o.rest_max_rms)
                                   : std::string(),
                  o.min_rest_intervals, 100.0 * e.rest_share, 100.0 * o.min_rest_share));

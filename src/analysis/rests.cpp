@@ -15,6 +15,9 @@ namespace {
 // (docs/notes/analysis.md "Noise floor": a 12-bit converter's rounding); why, at its use.
 constexpr double kCleanBandNoiseShare = 12.0;
 
+// sqrt(pi / 2): the sd of a median of many normal samples against their mean's.
+constexpr double kMedianSdGain = 1.2533141373155003;
+
 struct RestBounds {
   double level = 0.0;         ///< |x| at most this
   double spread = 0.0;        ///< max - min within a run at most this
@@ -75,18 +78,23 @@ Rests find_rests(std::span<const double> x, const VerdictOptions& o, double reco
   // 12-bit converter's rounding, a record's last digits).
   const double noise_sd =
       record_noise_sd > clean_level / kCleanBandNoiseShare ? record_noise_sd : 0.0;
-  // Under noise the band is judged on the running mean over a shortest rest, whose noise is
+  // Under noise the band is judged on the running median over a window, whose noise is about
   // sqrt(window) times smaller: a rest's edges, where the body speeds up out of it, then stay
-  // outside the run instead of failing its trend test.
-  const std::size_t window = o.min_rest_samples_at(noise_sd);
-  const std::vector<double> smooth = noise_sd > 0.0 ? moving_average(x, window)
+  // outside the run instead of failing its trend test. A median, not a mean: a rest shorter
+  // than the window between two slips still sets the median while it fills more than half
+  // the window, where the slips' samples pull a mean out of the band (rests of 5-19 samples
+  // at 0.5 % noise; docs/notes/analysis.md "Noise floor").
+  const std::size_t window = noise_sd > 0.0 ? o.rest_window_in_noise : 1;
+  const std::vector<double> smooth = noise_sd > 0.0 ? moving_median(x, window)
                                                     : std::vector<double>(x.begin(), x.end());
-  const double noisy_band =
-      o.rest_noise_sigmas * noise_sd / std::sqrt(static_cast<double>(window));
+  // The median of w normal samples has sd sqrt(pi / 2) sigma / sqrt(w) for large w (its
+  // efficiency 2 / pi against the mean).
+  const double noisy_band = o.rest_noise_sigmas * kMedianSdGain * noise_sd /
+                            std::sqrt(static_cast<double>(window));
   Rests r;
   // Whether a rest can be told from the noise at all is the single sample's question: where
   // the raw noise's band exceeds max_rest_band, a noise-driven wander lingers in it (a noisy
-  // Lorenz x passing zero), and no running mean makes it a rest.
+  // Lorenz x passing zero), and no running median makes it a rest.
   r.raw_level = clean_level + o.rest_noise_sigmas * noise_sd;
   r.judged = r.raw_level <= o.max_rest_band * max_abs;
   r.bounds = RestBounds{.level = clean_level + noisy_band,
@@ -97,11 +105,10 @@ Rests find_rests(std::span<const double> x, const VerdictOptions& o, double reco
                         .max_rms = o.rest_max_rms};
   const RestBounds& b = r.bounds;
   if (!r.judged) return r;
-  const std::size_t min_samples = window;
   std::size_t first = 0, run = 0;
   double lo = 0.0, hi = 0.0;
   const auto close_run = [&] {
-    if (run >= min_samples && rests_under_noise(x, first, run, b)) r.runs.emplace_back(first, run);
+    if (run >= o.min_rest_samples && rests_under_noise(x, first, run, b)) r.runs.emplace_back(first, run);
     run = 0;
   };
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -76,6 +76,27 @@ std::vector<double> moving_average(std::span<const double> x, std::size_t width)
   return y;
 }
 
+// Selecting each window's median anew (O(n w)) is enough for the rests' windows of a few tens
+// of samples; a two-heap running median would only pay for wide windows.
+std::vector<double> moving_median(std::span<const double> x, std::size_t width) {
+  const std::size_t half = width / 2;
+  std::vector<double> y(x.size()), window;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t lo = i >= half ? i - half : 0;
+    const std::size_t hi = std::min(x.size(), lo + std::max<std::size_t>(width, 1));
+    window.assign(x.begin() + static_cast<std::ptrdiff_t>(lo),
+                  x.begin() + static_cast<std::ptrdiff_t>(hi));
+    const std::size_t mid = window.size() / 2;
+    std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(mid), window.end());
+    double m = window[mid];
+    if (window.size() % 2 == 0) {
+      m = 0.5 * (m + *std::max_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(mid)));
+    }
+    y[i] = m;
+  }
+  return y;
+}
+
 double smoothed_period(std::span<const double> x, std::size_t width) {
   if (width <= 1) return mean_maxima_spacing(x);
   return mean_maxima_spacing(moving_average(x, width));

@@ -14,8 +14,8 @@ void VerdictOptions::validate() const {
   require_between(field("verdict.min_rest_share"), min_rest_share, 0, 1);
   require_ge(field("verdict.rest_noise_sigmas"), rest_noise_sigmas, 0);
   require_gt(field("verdict.rest_trend_sigmas"), rest_trend_sigmas, 0);
-  require_ge(field("verdict.min_rest_samples_in_noise"),
-             static_cast<double>(min_rest_samples_in_noise), 1);
+  require_ge(field("verdict.rest_window_in_noise"), static_cast<double>(rest_window_in_noise),
+             1);
   require_gt(field("verdict.rest_max_rms"), rest_max_rms, 0);
   require_gt_le(field("verdict.max_rest_band"), max_rest_band, 0, 1, "a fraction of max|x|");
   require_ge_lt(field("verdict.steady_variation"), steady_variation, 0, 1);

@@ -53,6 +53,23 @@ TEST(Spectrum, TooShortIsAnError) {
   EXPECT_THROW(welch_spectrum(x, 1000.0), Error);
 }
 
+TEST(MovingMedian, KeepsAPlateauShorterThanTheWindowAndDropsASpike) {
+  // Six zeros between runs of 1 in a window of 10: the median stays 0 at the plateau's middle,
+  // where the moving average (4 of 10 samples at 1) reads 0.4; a single spike vanishes.
+  std::vector<double> x(30, 1.0);
+  std::fill(x.begin() + 12, x.begin() + 18, 0.0);
+  x[5] = 50.0;
+  const std::vector<double> median = moving_median(x, 10);
+  const std::vector<double> mean = moving_average(x, 10);
+  EXPECT_EQ(median[15], 0.0);
+  EXPECT_NEAR(mean[15], 0.4, 1e-12);
+  EXPECT_EQ(median[5], 1.0);
+  // An even window's median is the mean of its two middle values; the ends use shorter
+  // windows, as the moving average does.
+  EXPECT_EQ(moving_median(std::vector<double>{1.0, 2.0, 3.0, 4.0}, 4)[1], 2.5);
+  EXPECT_EQ(moving_median(std::vector<double>{7.0}, 5)[0], 7.0);
+}
+
 TEST(Autocorrelation, SineIsCosineAndNoiseIsNearZero) {
   const auto x = sine(10000, 10.0, 1000.0);
   const Autocorrelation a = autocorrelation(x, 1000.0);

@@ -91,9 +91,36 @@ TEST(NoiseFloor, NoisyRestsKeepTheStickSlipFlag) {
   }
 }
 
+// Slips of a half sine of 48 samples, each followed by a rest of 12 samples at zero: rests
+// shorter than the 20-sample window the noisy rule smooths over.
+std::vector<double> short_rests(double amplitude) {
+  constexpr std::size_t kSlip = 48, kRest = 12;
+  std::vector<double> x(kSamples, 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t phase = i % (kSlip + kRest);
+    if (phase < kSlip) {
+      x[i] = amplitude * std::sin(std::numbers::pi * static_cast<double>(phase) / kSlip);
+    }
+  }
+  return x;
+}
+
+TEST(NoiseFloor, RestsShorterThanTheWindowKeepTheFlag) {
+  // A running mean over 20 samples of a 12-sample rest between two slips takes in 8 slip
+  // samples and leaves the band; the running median stays at the rest while it fills more
+  // than half the window. The rig's stick-slip at S2 = 0.2 mm^2 rests 5-19 samples at a time.
+  const double amplitude = 0.15;
+  ASSERT_TRUE(rests_like_stick_slip(rests_of(short_rests(amplitude))));
+  for (const double relative : {0.005, 0.01, 0.02}) {
+    const RegimeEvidence e = rests_of(add_noise(short_rests(amplitude), relative * amplitude, 11));
+    ASSERT_GT(e.rest_noise_sd, 0.0) << "the premise: the noisy rule applies";
+    EXPECT_TRUE(rests_like_stick_slip(e)) << "noise " << relative << " of the swing";
+  }
+}
+
 TEST(NoiseFloor, RestsAreNotJudgedWhereTheNoiseFillsTheBand) {
-  // A stick-slip record whose noise is half its swing: the band on the running mean over 20
-  // samples, 1 % of max|x| + 3.5 x the noise / sqrt(20), exceeds a tenth of max|x| (itself
+  // A stick-slip record whose noise is half its swing: the band on the running median over 20
+  // samples, 1 % of max|x| + 3.5 x 1.25 x the noise / sqrt(20), exceeds a tenth of max|x| (itself
   // widened by the noise), where white noise alone would "rest" all the time.
   const auto x = add_noise(slips_and_rests(0.3), 0.5 * 0.3, 5);
   RegimeEvidence e;
@@ -105,7 +132,7 @@ TEST(NoiseFloor, RestsAreNotJudgedWhereTheNoiseFillsTheBand) {
 TEST(NoiseFloor, TheRunningMeanKeepsTheRestsWhoseEdgesRamp) {
   // Rests entered and left along a slow ramp (a 1 Hz half sine, 0.3 m/s: the first and last
   // few ms of every slip lie inside the noisy band): a run that took in the ramps would fail
-  // the trend test; on the running mean the runs end where the ramps leave the narrower band.
+  // the trend test; on the running median the runs end where the ramps leave the narrower band.
   std::vector<double> x(kSamples);
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double phase = std::fmod(static_cast<double>(i) / kRate_Hz, 1.0);
@@ -136,7 +163,7 @@ TEST(NoiseFloor, ANoisyOscillationThroughZeroDoesNotRest) {
 
 TEST(NoiseFloor, TheNoiseConditionsAreWhatRejectThePassages) {
   // A slow tone (0.1 Hz over 40 s) creeps through the clean band: the clean rule counts
-  // 0.6 % of it at rest. With noise of 1 % of its swing the rule on the running mean counts
+  // 0.6 % of it at rest. With noise of 1 % of its swing the rule on the running median counts
   // about as much; with the trend and the RMS conditions made toothless it counts the noisy
   // passages through the wider band too, more than twice as much, which is why the
   // conditions are there.
@@ -176,9 +203,9 @@ TEST(NoiseFloor, ANoiseDrivenWanderThroughZeroDoesNotRest) {
     ASSERT_TRUE(estimate_noise_floor(x).resolved) << "the premise: its innovations read as noise";
     EXPECT_FALSE(rests_like_stick_slip(rests_of(x))) << seed;
   }
-  // Counted from 5 samples as on a clean record, its passages read as rests.
+  // With the band judged on the raw samples (a window of one), its passages read as rests.
   VerdictOptions short_rests;
-  short_rests.min_rest_samples_in_noise = short_rests.min_rest_samples;
+  short_rests.rest_window_in_noise = 1;
   const auto x = ar1(0.99, 1);
   RegimeEvidence e;
   rest_statistics(x, short_rests, estimate_noise_floor(x).sd, e);

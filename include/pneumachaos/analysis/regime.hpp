@@ -46,10 +46,12 @@ struct VerdictOptions {
   /// zero (n >= 5 resting samples exceed 1.5 sigma with a chance below 5 %, 10 below 1.5 %),
   /// while a noise-driven motion lingering near zero (an AR(1) process) sits off it.
   double rest_max_rms = 1.5;
-  /// ...and it lasts at least this many samples: a noise-driven motion (an AR(1) process)
-  /// passes through the widened band in a few samples looking at rest, while a body at rest
-  /// stays (20 ms at 1 kHz).
-  std::size_t min_rest_samples_in_noise = 20;
+  /// Under noise the band is judged on the running median over this many samples (20 ms at
+  /// 1 kHz): a noise-driven motion (an AR(1) process) passes through the raw samples' widened
+  /// band in a few samples looking at rest, while the median over the window follows its
+  /// wander out of the band; a body at rest keeps the median at zero while it rests for more
+  /// than half the window.
+  std::size_t rest_window_in_noise = 20;
   /// Rests are told from noise only where the band the noise widens stays within this
   /// fraction of max|x| (ten times the clean band): beyond, a record of noise alone would
   /// rest all the time, and rests are not judged.
@@ -82,12 +84,6 @@ struct VerdictOptions {
   /// Self-repetition veto: a record that repeats itself at one lag over most of its length,
   /// with a mismatch that does not grow at the claimed rate, has no exponential divergence.
   SelfRepetitionOptions repetition;
-  /// The shortest rest counted in a record whose white noise has sd noise_sd.
-  [[nodiscard]] std::size_t min_rest_samples_at(double noise_sd) const {
-    return noise_sd > 0.0 && min_rest_samples_in_noise > min_rest_samples
-               ? min_rest_samples_in_noise
-               : min_rest_samples;
-  }
   /// Throws Error naming the first threshold out of its range (a NaN is out of every range).
   void validate() const;
 };
@@ -101,8 +97,8 @@ struct RegimeEvidence {
   /// The record's white noise the rests were judged with: 0 where none is resolved or it is
   /// too small to break the clean rule (rest_statistics).
   double rest_noise_sd = 0.0;
-  /// The band |x| <= rest_level a rest stays in (under noise: on the running mean over
-  /// min_rest_samples_in_noise samples); where rests are not judged, the raw samples' band.
+  /// The band |x| <= rest_level a rest stays in (under noise: on the running median over
+  /// rest_window_in_noise samples); where rests are not judged, the raw samples' band.
   double rest_level = 0.0;
   /// The raw samples' band is narrow enough to tell rests from the noise
   /// (VerdictOptions::max_rest_band).

@@ -23,6 +23,10 @@ double mean_maxima_spacing(std::span<const double> x, double noise_sd = 0.0);
 /// x smoothed by a centred moving average of `width` samples (shorter at the ends).
 std::vector<double> moving_average(std::span<const double> x, std::size_t width);
 
+/// x smoothed by a centred moving median over the same windows as moving_average: a run
+/// shorter than the window still sets the median while it fills more than half the window.
+std::vector<double> moving_median(std::span<const double> x, std::size_t width);
+
 /// The orbital period [samples] as the mean maxima spacing of x smoothed over `width` samples
 /// (the embedding delay, about a quarter period): measurement noise and a faster superposed
 /// ripple do not count as extra maxima (a sine with 20 % noise: 4.7 samples unsmoothed,
