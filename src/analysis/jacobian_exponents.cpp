@@ -38,10 +38,15 @@ std::size_t delay_of(const JacobianOptions& o) {
   return std::min(o.delay, half_orbit);
 }
 
-constexpr std::size_t kEvolvesPerDelay = 4;
-
+// A map spans one delay by default (Eckmann, Kamphorst, Ruelle & Ciliberto 1986). Its image
+// (x[i + d], ..., x[i + m d]) repeats m - 1 of the point's own coordinates, so least squares
+// finds those rows exactly and only the last row carries fit error; and the true stretch per
+// map is a whole delay's. A shorter map (a fraction of the delay) is near the identity with
+// every row fitted: the fits' errors, which raise the largest exponent of a product of
+// matrices by about their variance per map whatever the true stretch, then weigh several
+// times more against a stretch several times smaller.
 std::size_t evolve_of(const JacobianOptions& o) {
-  return o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, delay_of(o) / kEvolvesPerDelay);
+  return o.evolve > 0 ? o.evolve : delay_of(o);
 }
 
 // Delay vectors that have an image `evolve` steps on: the points fitted and followed.
