@@ -61,13 +61,15 @@ std::size_t local_delay_of(const JacobianOptions& o) {
   return std::max<std::size_t>(1, (window + (l - 1) / 2) / (l - 1));
 }
 
-// A map spans one delay by default (Eckmann, Kamphorst, Ruelle & Ciliberto 1986). Its image
-// (x[i + d], ..., x[i + m d]) repeats m - 1 of the point's own coordinates, so least squares
-// finds those rows exactly and only the last row carries fit error; and the true stretch per
-// map is a whole delay's. A shorter map (a fraction of the delay) is near the identity with
-// every row fitted: the fits' errors, which raise the largest exponent of a product of
-// matrices by about their variance per map whatever the true stretch, then weigh several
-// times more against a stretch several times smaller.
+// A map spans one delay of the local coordinates by default (Eckmann, Kamphorst, Ruelle &
+// Ciliberto 1986). Its image (x[i + d], ..., x[i + l d]) repeats l - 1 of the point's own
+// coordinates, so least squares finds those rows exactly and only the last row carries fit
+// error; and the true stretch per map is a whole delay's. A shorter map (a fraction of the
+// delay) is near the identity with every row fitted: the fits' errors, which raise the
+// largest exponent of a product of matrices by about their variance per map whatever the
+// true stretch, then weigh several times more against a stretch several times smaller. A
+// longer one (two delays) reads higher again on flows: the neighbourhood's images no longer
+// follow a linear map (docs/notes/analysis.md).
 std::size_t evolve_of(const JacobianOptions& o) {
   return o.evolve > 0 ? o.evolve : local_delay_of(o);
 }
