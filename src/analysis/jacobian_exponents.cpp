@@ -38,15 +38,47 @@ std::size_t delay_of(const JacobianOptions& o) {
   return std::min(o.delay, half_orbit);
 }
 
-constexpr std::size_t kEvolvesPerDelay = 4;
+// The coordinates a map is fitted in (Eckmann, Kamphorst, Ruelle & Ciliberto 1986): the
+// neighbours are found in all m delay coordinates, where the reconstruction is unfolded, but
+// the map is fitted in at most three, spread over the same window. A flow needs three
+// coordinates to be chaotic (the flow's direction, a stretching one, a contracting one
+// across the folds); an attractor about two-dimensional fills no more of a neighbourhood, and
+// in the coordinates beyond it the neighbourhood is so thin that the fit's coefficients along
+// them are set by the curvature of the others, not by the dynamics: their spurious stretching
+// then feeds the largest exponent.
+constexpr std::size_t kMaxLocalDimension = 3;
 
+std::size_t local_dimension_of(const JacobianOptions& o) {
+  return o.local_dimension > 0 ? std::min(o.local_dimension, o.dimension)
+                               : std::min(o.dimension, kMaxLocalDimension);
+}
+
+// The local coordinates' delay: theirs span the delay vector's window, (m - 1) delays.
+std::size_t local_delay_of(const JacobianOptions& o) {
+  const std::size_t l = local_dimension_of(o);
+  if (l < 2 || l == o.dimension) return delay_of(o);
+  const std::size_t window = (o.dimension - 1) * delay_of(o);
+  return std::max<std::size_t>(1, (window + (l - 1) / 2) / (l - 1));
+}
+
+// A map spans one delay of the local coordinates by default (Eckmann, Kamphorst, Ruelle &
+// Ciliberto 1986). Its image (x[i + d], ..., x[i + l d]) repeats l - 1 of the point's own
+// coordinates, so least squares finds those rows exactly and only the last row carries fit
+// error; and the true stretch per map is a whole delay's. A shorter map (a fraction of the
+// delay) is near the identity with every row fitted: the fits' errors, which raise the
+// largest exponent of a product of matrices by about their variance per map whatever the
+// true stretch, then weigh several times more against a stretch several times smaller. A
+// longer one (two delays) reads higher again on flows: the neighbourhood's images no longer
+// follow a linear map (docs/notes/analysis.md).
 std::size_t evolve_of(const JacobianOptions& o) {
-  return o.evolve > 0 ? o.evolve : std::max<std::size_t>(1, delay_of(o) / kEvolvesPerDelay);
+  return o.evolve > 0 ? o.evolve : local_delay_of(o);
 }
 
 // Delay vectors that have an image `evolve` steps on: the points fitted and followed.
 std::size_t fitted_points(std::size_t n, const JacobianOptions& o) {
-  const std::size_t span = (o.dimension - 1) * delay_of(o) + evolve_of(o);
+  const std::size_t span = std::max((o.dimension - 1) * delay_of(o),
+                                    (local_dimension_of(o) - 1) * local_delay_of(o)) +
+                           evolve_of(o);
   return n > span ? n - span : 0;
 }
 
@@ -104,9 +136,9 @@ struct Stretching {
 
 // The Jacobians multiplied along the trajectory, re-orthonormalised after each by Householder
 // QR (Eckmann & Ruelle 1985): log |R_jj| is the stretching of the j-th direction of the frame.
-Stretching follow(const DelayEmbedding& e, const NeighbourIndex& index,
+Stretching follow(const DelayEmbedding& local, const NeighbourIndex& index,
                   const JacobianOptions& o) {
-  const std::size_t m = o.dimension, evolve = evolve_of(o);
+  const std::size_t m = local.dimension(), evolve = evolve_of(o);
   std::vector<std::size_t> references;
   for (std::size_t i = 0; i < index.size(); i += evolve) references.push_back(i);
   const auto neighbourhoods = index.k_nearest_each(references, neighbours_of(o), o.theiler);
@@ -121,7 +153,7 @@ Stretching follow(const DelayEmbedding& e, const NeighbourIndex& index,
       ++s.skipped;
       continue;
     }
-    const LocalMap map = fit_local_map(e, references[r], neighbourhoods[r], evolve);
+    const LocalMap map = fit_local_map(local, references[r], neighbourhoods[r], evolve);
     if (!map.spans) {
       ++s.skipped;
       continue;
@@ -159,11 +191,13 @@ double batch_standard_error(const std::vector<double>& logs, std::size_t batches
   return std::sqrt(var / static_cast<double>(batches - 1) / static_cast<double>(batches));
 }
 
-// One run of the estimator: the delay vectors' neighbours indexed, the trajectory followed.
+// One run of the estimator: the delay vectors' neighbours indexed, the trajectory followed in
+// the local coordinates.
 Stretching stretching(std::span<const double> x, const JacobianOptions& o) {
   const DelayEmbedding e(x, o.dimension, delay_of(o));
-  const NeighbourIndex index(e, e.size() - evolve_of(o), repeat_resolution(x));
-  return follow(e, index, o);
+  const DelayEmbedding local(x, local_dimension_of(o), local_delay_of(o));
+  const NeighbourIndex index(e, fitted_points(x.size(), o), repeat_resolution(x));
+  return follow(local, index, o);
 }
 
 double largest_per_s(const Stretching& s, const JacobianOptions& o, double rate_Hz) {
@@ -244,8 +278,8 @@ JacobianResult jacobian_exponents(std::span<const double> x, double rate_Hz,
                                         "outside the Theiler window spanning all {} "
                                         "coordinates: too few local maps (a strictly periodic "
                                         "or coarsely quantised record)",
-                                        r.maps, r.maps + r.skipped, o.dimension + 1,
-                                        o.dimension));
+                                        r.maps, r.maps + r.skipped,
+                                        local_dimension_of(o) + 1, local_dimension_of(o)));
   }
   const double per_map_s = static_cast<double>(r.evolve) / rate_Hz;
   const double measured_s = static_cast<double>(r.maps) * per_map_s;

@@ -29,8 +29,13 @@ struct JacobianOptions {
   /// most half an orbit: a longer window folds the reconstruction so that a neighbourhood of
   /// a 1e4-sample record is no longer mapped linearly (docs/notes/analysis.md).
   std::size_t typical_period = 0;
-  /// Steps each local map spans; 0: a quarter of the delay used, at least 1. Short next to
-  /// the orbit, so that the neighbourhood stays within one fold over a map.
+  /// Coordinates the local maps are fitted in, spread over the delay vector's window (the
+  /// neighbours are still found in all `dimension`); 0: min(dimension, 3), what a chaotic
+  /// flow needs. Coordinates beyond the attractor's own fill no neighbourhood and make
+  /// spurious stretching (docs/notes/analysis.md); raise it for hyperchaotic records.
+  std::size_t local_dimension = 0;
+  /// Steps each local map spans; 0: one delay of the local coordinates, so that the map's
+  /// image repeats all but one of the point's coordinates and only that one is fitted.
   std::size_t evolve = 0;
   /// Neighbours per local fit; 0: max(12, 4 x dimension), enough that an affine fit in
   /// `dimension` coordinates is over-determined about four times.
@@ -45,8 +50,9 @@ struct JacobianOptions {
 };
 
 struct JacobianResult {
-  /// All `dimension` exponents, largest first, per second; those beyond the dynamics'
-  /// own dimension are spurious (docs/notes/analysis.md).
+  /// All exponents of the local coordinates (JacobianOptions::local_dimension), largest
+  /// first, per second; those beyond the dynamics' own dimension are spurious
+  /// (docs/notes/analysis.md).
   std::vector<double> exponents_per_s;
   double lambda_per_s = 0.0;       ///< exponents_per_s[0]
   double sum_per_s = 0.0;          ///< sum of the exponents: negative when dissipative
