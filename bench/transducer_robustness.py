@@ -3,7 +3,7 @@
 
 Usage:
     python3 bench/transducer_robustness.py PNEUMACHAOS OUT_DIR [--surrogates N]
-        [--max-false-chaos N] [--changes]
+        [--max-false-chaos N] [--max-settled-false-chaos N] [--changes]
 
 Three rigs (the default, scenarios/variants/compliant_mount.toml, scenarios/variants/
 frozen_light_piston.toml) at S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and
@@ -16,12 +16,14 @@ over its run (`sweep --model-exponent`): chaotic when it exceeds 3 times its unc
 
 Prints, per corruption, how many verdicts keep the clean record's class, how many records not
 chaotic clean are called chaotic ("false chaos"), how many of those the model's exponent does
-not call chaotic either ("model not"), and how many stick-slip flags are kept;
+not call chaotic either ("model not"), how many have a settled clean verdict — not chaotic
+from 1.5 s and 2.5 s either ("settled") — and how many stick-slip flags are kept;
 docs/notes/analysis.md "Noise floor" gives the table. --changes lists every record whose class
 or flag changed. The records are kept in OUT_DIR and reused. About 1.5 min on two cores with
 --surrogates 0 (the sweep's setting), and a minute more to simulate the records the first time.
 With --max-false-chaos N it exits 1 when more than N noisy, quantised or band-limited records
-are called chaotic whose clean record is not (the CTest long.transducer_robustness).
+are called chaotic whose clean record is not; with --max-settled-false-chaos N, when more than
+N are whose clean record is settled (the CTest long.transducer_robustness: 0).
 """
 import argparse
 import collections
@@ -40,6 +42,8 @@ RIGS = {'default': [], 'compliant': [os.path.join(REPO, 'scenarios/variants/comp
 S2 = [0.05, 0.2, 0.35, 0.5, 0.65, 1.25, 3.35]
 REPEATS = 3
 RATE_HZ = 1000.0
+# A clean verdict is settled when no start half a second either side of 2 s reads it chaotic.
+SHIFTED_STARTS_S = (1.5, 2.5)
 
 
 def velocity(path):
@@ -80,11 +84,11 @@ def corruptions(v, seed):
     return out
 
 
-def judge(cli, t, x, path, surrogates):
+def judge(cli, t, x, path, surrogates, start_s=2.0):
     with open(path, 'w') as f:
         f.write('t[s],v[m/s]\n')
         f.writelines(f'{a:.6f},{b:.9g}\n' for a, b in zip(t, x))
-    done = subprocess.run([cli, 'analyze', path, '--from', '2', '--surrogates', str(surrogates),
+    done = subprocess.run([cli, 'analyze', path, '--from', str(start_s), '--surrogates', str(surrogates),
                            '--json', path + '.json'], capture_output=True, text=True)
     if done.returncode != 0:
         return 'error', False
@@ -122,12 +126,13 @@ def main():
     parser.add_argument('out')
     parser.add_argument('--surrogates', type=int, default=0)
     parser.add_argument('--max-false-chaos', type=int, default=None)
+    parser.add_argument('--max-settled-false-chaos', type=int, default=None)
     parser.add_argument('--changes', action='store_true',
                         help='also list every record whose class or stick-slip flag changed')
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     scratch = os.path.join(args.out, 'judged.csv')
-    tally = collections.defaultdict(lambda: [0, 0, 0, 0, 0, 0])
+    tally = collections.defaultdict(lambda: [0, 0, 0, 0, 0, 0, 0])
     changes = []
     for rig in RIGS:
         for s2 in S2:
@@ -139,28 +144,37 @@ def main():
                 verdicts = {name: judge(args.cli, t, x, scratch, args.surrogates)
                             for name, x in corruptions(v, seed).items()}
                 clean, clean_flag = verdicts.pop('clean')
+                # Settled: not chaotic clean from half a second earlier or later either.
+                settled = clean != 'chaotic' and all(
+                    judge(args.cli, t, v, scratch, args.surrogates, start)[0] != 'chaotic'
+                    for start in SHIFTED_STARTS_S)
                 for name, (regime, flag) in verdicts.items():
                     if regime != clean or flag != clean_flag:
                         changes.append(f'{rig} S2={s2} run {repeat} {name}: '
                                        f'{clean}{"*" if clean_flag else ""} -> '
                                        f'{regime}{"*" if flag else ""}'
                                        f'{" (model: chaotic)" if truth else ""}')
-                    kept, total, false_chaos, model_not, flags, flagged = tally[name]
+                    kept, total, false_chaos, model_not, on_settled, flags, flagged = tally[name]
                     new_chaos = regime == 'chaotic' and clean != 'chaotic'
                     tally[name] = [kept + (regime == clean), total + 1, false_chaos + new_chaos,
                                    model_not + (new_chaos and not truth),
+                                   on_settled + (new_chaos and settled),
                                    flags + (clean_flag and flag), flagged + clean_flag]
-    for name, (kept, total, false_chaos, model_not, flags, flagged) in tally.items():
+    for name, (kept, total, false_chaos, model_not, on_settled, flags, flagged) in tally.items():
         print(f'{name:11s} class kept {kept}/{total}  false chaos {false_chaos} '
-              f'(model not {model_not})  stick-slip kept {flags}/{flagged}')
+              f'(model not {model_not}, settled {on_settled})  stick-slip kept {flags}/{flagged}')
     if args.changes:
         print('changed (* marks the stick-slip flag):')
         print('\n'.join(changes))
     false_chaos = sum(counts[2] for counts in tally.values())
-    print(f'false chaos in all: {false_chaos}')
+    settled = sum(counts[4] for counts in tally.values())
+    print(f'false chaos in all: {false_chaos}, on settled clean records: {settled}')
     if args.max_false_chaos is not None and false_chaos > args.max_false_chaos:
         raise SystemExit(f'{false_chaos} records called chaotic whose clean record is not '
                          f'(at most {args.max_false_chaos} allowed)')
+    if args.max_settled_false_chaos is not None and settled > args.max_settled_false_chaos:
+        raise SystemExit(f'{settled} records called chaotic whose clean record is not chaotic '
+                         f'from any start (at most {args.max_settled_false_chaos} allowed)')
 
 
 if __name__ == '__main__':
