@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +38,19 @@ EstimatorDisagreement estimator_disagreement(const AnalysisResult& r) {
   return d;
 }
 
+CombinedExponent combined_exponent(const AnalysisResult& r) {
+  CombinedExponent c;
+  const EstimatorDisagreement d = estimator_disagreement(r);
+  const double u_d = r.divergence.uncertainty_per_s, u_j = r.jacobian.uncertainty_per_s;
+  if (!d.defined || !r.jacobian.reliable || !(u_d > 0.0) || !(u_j > 0.0)) return c;
+  const double w_d = 1.0 / (u_d * u_d), w_j = 1.0 / (u_j * u_j);
+  c.defined = true;
+  c.value_per_s = (w_d * r.divergence.lambda_per_s + w_j * r.jacobian.lambda_per_s) / (w_d + w_j);
+  c.scale = std::max(1.0, d.in_uncertainties);
+  c.uncertainty_per_s = c.scale / std::sqrt(w_d + w_j);
+  return c;
+}
+
 std::string jacobian_text(const AnalysisResult& r) {
   if (r.jacobian_status.empty()) return "";
   std::string out;
@@ -60,6 +74,13 @@ std::string jacobian_text(const AnalysisResult& r) {
         d.combined_uncertainty_per_s,
         d.beyond_95 ? "they disagree beyond their 95 % intervals"
                     : "consistent within their 95 % intervals");
+  }
+  const CombinedExponent c = combined_exponent(r);
+  if (c.defined) {
+    out += fmt::format(
+        "  the two combined: {:.4g} +- {:.2g} 1/s (inverse-variance weights; the interval "
+        "scaled by {:.2g} for their disagreement)\n",
+        c.value_per_s, c.uncertainty_per_s, c.scale);
   }
   return out;
 }
@@ -97,6 +118,12 @@ nlohmann::json jacobian_json(const AnalysisResult& r) {
                                   json_quantity(d.combined_uncertainty_per_s, "1/s")},
                                  {"in_uncertainties", json_quantity(d.in_uncertainties, "-")},
                                  {"beyond_95", d.beyond_95}}
+                : nlohmann::json(nullptr);
+  const CombinedExponent c = combined_exponent(r);
+  out["combined"] =
+      c.defined ? nlohmann::json{{"value", json_quantity(c.value_per_s, "1/s")},
+                                 {"uncertainty", json_quantity(c.uncertainty_per_s, "1/s")},
+                                 {"scale", json_quantity(c.scale, "-")}}
                 : nlohmann::json(nullptr);
   return out;
 }

@@ -22,6 +22,21 @@ struct EstimatorDisagreement {
 
 EstimatorDisagreement estimator_disagreement(const AnalysisResult& r);
 
+/// The two estimates of the largest exponent as one, by a rule fixed before it was measured:
+/// the inverse-variance weighted mean, its standard error sqrt(1 / sum w) multiplied by the
+/// Particle Data Group's scale factor S = max(1, sqrt(chi2 / (N - 1))) (Review of Particle
+/// Physics, "Introduction: averaging"), which for two estimates is max(1, their difference in
+/// combined uncertainties): where they disagree the interval widens in proportion.
+/// Defined where both are (a linear region, a reliable Jacobian estimate).
+struct CombinedExponent {
+  bool defined = false;
+  double value_per_s = 0.0;
+  double uncertainty_per_s = 0.0;  ///< one standard error, scaled by `scale`
+  double scale = 1.0;              ///< S >= 1
+};
+
+CombinedExponent combined_exponent(const AnalysisResult& r);
+
 /// The text lines (empty when not requested).
 std::string jacobian_text(const AnalysisResult& r);
 

@@ -151,4 +151,40 @@ TEST(JacobianExponents, AnalyzeReportsItBesideTheDivergenceEstimate) {
   EXPECT_NE(noise.jacobian_status.find("unreliable"), std::string::npos) << noise.jacobian_status;
 }
 
+// Two estimates, worked by hand: 1.0 +- 0.1 and 1.3 +- 0.2 (weights 100 and 25) average to
+// (100 + 32.5) / 125 = 1.06 with a standard error 1 / sqrt(125) = 0.0894; their difference,
+// 0.3, is 1.342 of their combined uncertainty sqrt(0.05) = 0.2236, so the error is scaled by
+// 1.342 to 0.12. Closer together (1.1 +- 0.2: 0.447 of it) the scale stays 1.
+AnalysisResult two_estimates(double jacobian, double jacobian_sd) {
+  AnalysisResult r;
+  r.jacobian_run = true;
+  r.jacobian_status = "computed";
+  r.jacobian.reliable = true;
+  r.jacobian.lambda_per_s = jacobian;
+  r.jacobian.uncertainty_per_s = jacobian_sd;
+  r.divergence.found_linear_region = true;
+  r.divergence.lambda_per_s = 1.0;
+  r.divergence.uncertainty_per_s = 0.1;
+  return r;
+}
+
+TEST(JacobianExponents, TheTwoCombineByInverseVarianceWithTheScaleFactor) {
+  const CombinedExponent c = combined_exponent(two_estimates(1.3, 0.2));
+  ASSERT_TRUE(c.defined);
+  EXPECT_NEAR(c.value_per_s, 1.06, 1e-12);
+  EXPECT_NEAR(c.scale, 0.3 / std::sqrt(0.05), 1e-12);
+  EXPECT_NEAR(c.uncertainty_per_s, c.scale / std::sqrt(125.0), 1e-12);
+  const CombinedExponent close = combined_exponent(two_estimates(1.1, 0.2));
+  EXPECT_EQ(close.scale, 1.0);
+  EXPECT_NEAR(close.uncertainty_per_s, 1.0 / std::sqrt(125.0), 1e-12);
+  AnalysisResult unreliable = two_estimates(1.3, 0.2);
+  unreliable.jacobian.reliable = false;
+  EXPECT_FALSE(combined_exponent(unreliable).defined);
+  AnalysisResult no_region = two_estimates(1.3, 0.2);
+  no_region.divergence.found_linear_region = false;
+  EXPECT_FALSE(combined_exponent(no_region).defined);
+  EXPECT_NE(jacobian_text(two_estimates(1.3, 0.2)).find("the two combined: 1.06"),
+            std::string::npos);
+}
+
 }  // namespace pneumachaos

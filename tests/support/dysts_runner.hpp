@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dysts_flows.hpp"
+#include "analysis/jacobian_output.hpp"
 #include "pneumachaos/analysis/analyze.hpp"
 
 namespace pneumachaos::testing::dysts {
@@ -108,6 +109,10 @@ struct Row {
   /// (1.96 u), and whether its fits call it reliable.
   bool jacobian_found = false, jacobian_reliable = false;
   double jacobian = 0.0, jacobian_half = 0.0;
+  /// The two combined (combined_exponent): value and 95 % half-width; where it is not
+  /// defined, the divergence estimate's.
+  bool combined_defined = false;
+  double combined = 0.0, combined_half = 0.0;
   [[nodiscard]] double error() const { return found ? lambda / truth - 1.0 : -1.0; }
   [[nodiscard]] bool within10() const { return found && std::abs(error()) <= 0.10; }
   [[nodiscard]] bool covered() const {
@@ -142,6 +147,10 @@ inline Row analyse(const System& s, std::size_t n, const Benettin& long_run,
   row.jacobian_reliable = r.jacobian_run && r.jacobian.reliable;
   row.jacobian = r.jacobian.lambda_per_s;
   row.jacobian_half = 1.96 * r.jacobian.uncertainty_per_s;
+  const CombinedExponent c = combined_exponent(r);
+  row.combined_defined = c.defined;
+  row.combined = c.defined ? c.value_per_s : row.lambda;
+  row.combined_half = c.defined ? 1.96 * c.uncertainty_per_s : 0.5 * (row.high - row.low);
   return row;
 }
 
@@ -216,17 +225,28 @@ struct EstimatorScores {
   std::size_t jacobian_found = 0, jacobian_truth10 = 0, jacobian_span10 = 0,
               jacobian_covered = 0;
   std::vector<double> jacobian_half_share;  ///< 95 % half-width / value, reliable values
+  /// The combined value where defined, else the divergence's (records with a value).
+  std::size_t combined_defined = 0, combined_truth10 = 0, combined_span10 = 0,
+              combined_covered = 0;
+  std::vector<double> divergence_half_share, combined_half_share, combined_error;
+  static double median_of(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  }
   [[nodiscard]] std::string text() const {
-    std::vector<double> h = jacobian_half_share;
-    std::sort(h.begin(), h.end());
-    const double median = h.empty() ? 0.0 : h[h.size() / 2];
+    const double median = median_of(jacobian_half_share);
     return fmt::format("{} records; divergence: within 10 % of the truth {}, of the span {}, "
-                       "truth covered {}; local Jacobians: reliable value {}, within 10 % of "
-                       "the truth {}, of the span {}, truth covered {}, median 95 % half-width "
-                       "{:.0f} % of the value",
+                       "truth covered {}, median 95 % half-width {:.0f} % of the value; local "
+                       "Jacobians: reliable value {}, within 10 % of the truth {}, of the span "
+                       "{}, truth covered {}, median 95 % half-width {:.0f} % of the value; "
+                       "combined (defined on {}): within 10 % of the truth {}, of the span {}, "
+                       "truth covered {}, median 95 % half-width {:.0f} % of the value, median "
+                       "error {:.1f} %",
                        records, divergence_truth10, divergence_span10, divergence_covered,
-                       jacobian_found, jacobian_truth10, jacobian_span10, jacobian_covered,
-                       100.0 * median);
+                       100.0 * median_of(divergence_half_share), jacobian_found,
+                       jacobian_truth10, jacobian_span10, jacobian_covered, 100.0 * median,
+                       combined_defined, combined_truth10, combined_span10, combined_covered,
+                       100.0 * median_of(combined_half_share), 100.0 * median_of(combined_error));
   }
 };
 
@@ -238,6 +258,15 @@ inline EstimatorScores score_estimators(const std::vector<Row>& rows) {
     s.divergence_truth10 += r.within10() ? 1 : 0;
     s.divergence_span10 += r.found && near(r.lambda, r.span) ? 1 : 0;
     s.divergence_covered += r.covered() ? 1 : 0;
+    if (r.found) {
+      s.divergence_half_share.push_back(0.5 * (r.high - r.low) / std::abs(r.lambda));
+      s.combined_defined += r.combined_defined ? 1 : 0;
+      s.combined_truth10 += near(r.combined, r.truth) ? 1 : 0;
+      s.combined_span10 += near(r.combined, r.span) ? 1 : 0;
+      s.combined_covered += std::abs(r.combined - r.truth) <= r.combined_half ? 1 : 0;
+      s.combined_half_share.push_back(r.combined_half / std::abs(r.combined));
+      s.combined_error.push_back(std::abs(r.combined / r.truth - 1.0));
+    }
     if (!r.jacobian_reliable) continue;
     ++s.jacobian_found;
     s.jacobian_truth10 += near(r.jacobian, r.truth) ? 1 : 0;
