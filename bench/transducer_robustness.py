@@ -8,7 +8,7 @@ Usage:
 Three rigs (the default, scenarios/variants/compliant_mount.toml, scenarios/variants/
 frozen_light_piston.toml) at S2 = 0.05 ... 3.35 mm^2, three runs each with 3 % seal scatter and
 5 % bore texture, 30 s or to the stroke end (records of at least 3.2 s kept), each analysed from
-2 s clean and with: white noise of 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation
+2 s clean and with: white noise of 0.25 / 0.5 / 1 / 2 / 3 % of its swing, 10- and 12-bit quantisation
 over +-0.5 m/s, and a first-order lag of 100 / 300 Hz (the transducer stages of docs/model.md,
 applied here to the clean velocity so the clean and corrupted records share one motion). Each
 corruption is seeded from the record's name. Each record also carries the model's own exponent
@@ -74,9 +74,11 @@ def quantise(x, bits, full_scale=0.5):
 def corruptions(v, seed):
     rng = np.random.default_rng(seed)
     swing = v[2000:].max() - v[2000:].min()
+    noisy = {share: v + rng.normal(0.0, share * swing, len(v)) for share in (0.005, 0.01, 0.02, 0.03)}
+    noisy[0.0025] = v + rng.normal(0.0, 0.0025 * swing, len(v))  # drawn last: the others as before
     out = {'clean': v}
-    for share in (0.005, 0.01, 0.02, 0.03):
-        out[f'noise {share:.1%}'] = v + rng.normal(0.0, share * swing, len(v))
+    for share in sorted(noisy):
+        out[f'noise {share:.2%}'] = noisy[share]
     for bits in (10, 12):
         out[f'{bits} bits'] = quantise(v, bits)
     for corner in (100, 300):
