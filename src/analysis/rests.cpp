@@ -108,7 +108,9 @@ Rests find_rests(std::span<const double> x, const VerdictOptions& o, double reco
   std::size_t first = 0, run = 0;
   double lo = 0.0, hi = 0.0;
   const auto close_run = [&] {
-    if (run >= o.min_rest_samples && rests_under_noise(x, first, run, b)) r.runs.emplace_back(first, run);
+    if (run >= o.min_rest_samples && rests_under_noise(x, first, run, b)) {
+      r.runs.emplace_back(first, run);
+    }
     run = 0;
   };
   // Each raw sample of a rest lies within the raw band too (a resting sample stays within

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace pneumachaos {
 namespace {
@@ -12,6 +13,15 @@ namespace {
 // (docs/notes/analysis.md "Noise floor", Maxima).
 constexpr double kHysteresisSds = 0.25;
 constexpr double kNoiseRangeSds = 6.0;
+
+// The centred window [lo, hi) of `width` samples around sample i of n: from i - width / 2,
+// cut at the record's end (so shorter at the ends).
+std::pair<std::size_t, std::size_t> centred_window(std::size_t i, std::size_t n,
+                                                   std::size_t width) {
+  const std::size_t half = width / 2;
+  const std::size_t lo = i >= half ? i - half : 0;
+  return {lo, std::min(n, lo + std::max<std::size_t>(width, 1))};
+}
 
 }  // namespace
 
@@ -66,11 +76,9 @@ double mean_maxima_spacing(std::span<const double> x, double noise_sd) {
 std::vector<double> moving_average(std::span<const double> x, std::size_t width) {
   std::vector<double> prefix(x.size() + 1, 0.0);
   for (std::size_t i = 0; i < x.size(); ++i) prefix[i + 1] = prefix[i] + x[i];
-  const std::size_t half = width / 2;
   std::vector<double> y(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const std::size_t lo = i >= half ? i - half : 0;
-    const std::size_t hi = std::min(x.size(), lo + std::max<std::size_t>(width, 1));
+    const auto [lo, hi] = centred_window(i, x.size(), width);
     y[i] = (prefix[hi] - prefix[lo]) / static_cast<double>(hi - lo);
   }
   return y;
@@ -79,20 +87,15 @@ std::vector<double> moving_average(std::span<const double> x, std::size_t width)
 // Selecting each window's median anew (O(n w)) is enough for the rests' windows of a few tens
 // of samples; a two-heap running median would only pay for wide windows.
 std::vector<double> moving_median(std::span<const double> x, std::size_t width) {
-  const std::size_t half = width / 2;
   std::vector<double> y(x.size()), window;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const std::size_t lo = i >= half ? i - half : 0;
-    const std::size_t hi = std::min(x.size(), lo + std::max<std::size_t>(width, 1));
+    const auto [lo, hi] = centred_window(i, x.size(), width);
     window.assign(x.begin() + static_cast<std::ptrdiff_t>(lo),
                   x.begin() + static_cast<std::ptrdiff_t>(hi));
-    const std::size_t mid = window.size() / 2;
-    std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(mid), window.end());
-    double m = window[mid];
-    if (window.size() % 2 == 0) {
-      m = 0.5 * (m + *std::max_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(mid)));
-    }
-    y[i] = m;
+    const auto mid = window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2);
+    std::nth_element(window.begin(), mid, window.end());
+    // An even count: the mean of the two middle values (the lower one is the largest below).
+    y[i] = window.size() % 2 == 1 ? *mid : 0.5 * (*mid + *std::max_element(window.begin(), mid));
   }
   return y;
 }
